@@ -1,0 +1,50 @@
+// The small pieces every toppling contact law is assembled from (linear spring, viscous
+// dashpot, Coulomb slider). Written once here so that the parallel-bond law and the
+// smooth-joint law cannot drift apart.
+#pragma once
+
+#include <lib/base/Math.hpp>
+#include <core/Body.hpp>
+#include <core/State.hpp>
+
+namespace yade {
+namespace toppling {
+
+	// Two linear springs in series, e.g. the two discs' stiffnesses of a contact.
+	inline Real seriesStiffness(Real k1, Real k2) { return k1 * k2 / (k1 + k2); }
+
+	// Mass seen by a dashpot between two bodies; a body that is not dynamic (a wall, a fixed
+	// disc) behaves as infinitely heavy.
+	inline Real effectiveMass(const Body& b1, const Body& b2)
+	{
+		const bool d1 = b1.isDynamic(), d2 = b2.isDynamic();
+		if (d1 && d2) return b1.state->mass * b2.state->mass / (b1.state->mass + b2.state->mass);
+		if (d1) return b1.state->mass;
+		if (d2) return b2.state->mass;
+		return 0;
+	}
+
+	// Dashpot coefficient for critical damping ratio beta of a spring k carrying mass m:
+	// c = 2 beta sqrt(m k).
+	inline Real dashpotCoefficient(Real beta, Real mass, Real k) { return 2 * beta * math::sqrt(mass * k); }
+
+	// Relative velocity of body 2's contact point with respect to body 1's.
+	inline Vector3r relativeVelocity(const State& s1, const State& s2, const Vector3r& contactPoint)
+	{
+		return (s2.vel + s2.angVel.cross(contactPoint - s2.pos)) - (s1.vel + s1.angVel.cross(contactPoint - s1.pos));
+	}
+
+	// Coulomb slider: scales the shear force back onto |Fs| <= limit; true while slipping.
+	inline bool coulombSlip(Vector3r& shearForce, Real limit)
+	{
+		const Real fs = shearForce.norm();
+		if (fs <= limit) return false;
+		shearForce *= (fs > 0 ? limit / fs : 0);
+		return true;
+	}
+
+	// Elastic energy of a linear spring holding force f.
+	inline Real springEnergy(Real f, Real k) { return k > 0 ? 0.5 * f * f / k : 0; }
+
+} // namespace toppling
+} // namespace yade

@@ -1,0 +1,231 @@
+#include "ParallelBond.hpp"
+#include "ContactPieces.hpp"
+#include "Validation.hpp"
+#include <core/Scene.hpp>
+
+namespace yade {
+
+YADE_PLUGIN((ParallelBondMat)(ParallelBondPhys)(Ip2_ParallelBondMat_ParallelBondMat_ParallelBondPhys)(Law2_ScGeom_ParallelBondPhys_ParallelBond));
+CREATE_LOGGER(Law2_ScGeom_ParallelBondPhys_ParallelBond);
+
+using toppling::Range;
+
+void ParallelBondMat::validate() const
+{
+	toppling::require("ParallelBondMat", "young", young, Range::positive());
+	toppling::require("ParallelBondMat", "knKs", knKs, Range::positive());
+	toppling::require("ParallelBondMat", "thickness", thickness, Range::positive());
+	toppling::require("ParallelBondMat", "frictionAngle", frictionAngle, Range::angle());
+	toppling::require("ParallelBondMat", "normalDamping", normalDamping, Range::dampingRatio());
+	toppling::require("ParallelBondMat", "bondRadiusMultiplier", bondRadiusMultiplier, Range::positive());
+	toppling::require("ParallelBondMat", "bondYoung", bondYoung, Range::nonNegative());
+	toppling::require("ParallelBondMat", "bondKnKs", bondKnKs, Range::positive());
+	toppling::require("ParallelBondMat", "bondTensileStrength", bondTensileStrength, Range::nonNegative());
+	toppling::require("ParallelBondMat", "bondCohesion", bondCohesion, Range::nonNegative());
+	toppling::require("ParallelBondMat", "bondFrictionAngle", bondFrictionAngle, Range::angle());
+	toppling::require("ParallelBondMat", "bondNormalDamping", bondNormalDamping, Range::dampingRatio());
+}
+
+/********************** ParallelBondPhys **********************/
+
+void ParallelBondPhys::installBond(Real overlap)
+{
+	bondState       = intact;
+	bondRefOverlap  = overlap;
+	bondNormalForce = 0;
+	bondShearForce  = Vector3r::Zero();
+	bondMoment      = 0;
+	updateTotalStiffness();
+}
+
+void ParallelBondPhys::removeBond(int mode)
+{
+	bondState       = mode;
+	bondNormalForce = 0;
+	bondShearForce  = Vector3r::Zero();
+	bondMoment      = 0;
+	updateTotalStiffness();
+}
+
+void ParallelBondPhys::updateTotalStiffness()
+{
+	const bool b = isBonded();
+	kn           = contactKn + (b ? bondKn * bondArea : 0);
+	ks           = contactKs + (b ? bondKs * bondArea : 0);
+	kr           = b ? bondKn * bondInertia : 0;
+}
+
+Real ParallelBondPhys::bondEnergy() const
+{
+	if (!isBonded()) return 0;
+	return toppling::springEnergy(bondNormalForce, bondKn * bondArea) + toppling::springEnergy(bondShearForce.norm(), bondKs * bondArea)
+	        + toppling::springEnergy(bondMoment, bondKn * bondInertia);
+}
+
+Real ParallelBondPhys::contactEnergy() const
+{
+	return toppling::springEnergy(contactNormalForce, contactKn) + toppling::springEnergy(contactShearForce.norm(), contactKs);
+}
+
+/********************** Ip2 **********************/
+
+void Ip2_ParallelBondMat_ParallelBondMat_ParallelBondPhys::go(
+        const shared_ptr<Material>& m1, const shared_ptr<Material>& m2, const shared_ptr<Interaction>& interaction)
+{
+	if (interaction->phys) return;
+	const auto* mat1 = YADE_CAST<ParallelBondMat*>(m1.get());
+	const auto* mat2 = YADE_CAST<ParallelBondMat*>(m2.get());
+	mat1->validate();
+	mat2->validate();
+	auto phys         = shared_ptr<ParallelBondPhys>(new ParallelBondPhys());
+	interaction->phys = phys;
+
+	const Real t = math::min(mat1->thickness, mat2->thickness);
+	// Each disc is a spring 2 t Ec; the two act in series (PFC2D, Potyondy & Cundall 2004).
+	phys->contactKn              = toppling::seriesStiffness(2 * mat1->thickness * mat1->young, 2 * mat2->thickness * mat2->young);
+	phys->contactKs              = phys->contactKn / (0.5 * (mat1->knKs + mat2->knKs));
+	phys->tangensOfFrictionAngle = math::tan(math::min(mat1->frictionAngle, mat2->frictionAngle));
+
+	const Body& b1   = *Body::byId(interaction->getId1(), scene);
+	const Body& b2   = *Body::byId(interaction->getId2(), scene);
+	const Real  mEff = toppling::effectiveMass(b1, b2);
+	phys->contactDamping = toppling::dashpotCoefficient(math::max(mat1->normalDamping, mat2->normalDamping), mEff, phys->contactKn);
+
+	// Bond properties are fixed now so that installing a bond later only needs the overlap.
+	const auto* geom = dynamic_cast<const GenericSpheresContact*>(interaction->geom.get());
+	const Real  r1 = geom ? geom->refR1 : 0, r2 = geom ? geom->refR2 : 0;
+	const Real  rMin = (r1 > 0 && r2 > 0) ? math::min(r1, r2) : math::max(r1, r2);
+	if (rMin > 0) {
+		phys->bondRadius  = math::min(mat1->bondRadiusMultiplier, mat2->bondRadiusMultiplier) * rMin;
+		phys->bondArea    = 2 * phys->bondRadius * t;
+		phys->bondInertia = 2. / 3. * math::pow(phys->bondRadius, 3) * t;
+		phys->bondKn      = math::min(mat1->bondYoung, mat2->bondYoung) / (r1 + r2);
+		phys->bondKs      = phys->bondKn / (0.5 * (mat1->bondKnKs + mat2->bondKnKs));
+		phys->bondDamping = toppling::dashpotCoefficient(
+		        math::max(mat1->bondNormalDamping, mat2->bondNormalDamping), mEff, phys->bondKn * phys->bondArea);
+	}
+	phys->bondTensileStrength = math::min(mat1->bondTensileStrength, mat2->bondTensileStrength);
+	phys->bondCohesion        = math::min(mat1->bondCohesion, mat2->bondCohesion);
+	phys->bondTanFriction     = math::tan(math::min(mat1->bondFrictionAngle, mat2->bondFrictionAngle));
+	phys->updateTotalStiffness();
+}
+
+/********************** Law2 **********************/
+
+bool Law2_ScGeom_ParallelBondPhys_ParallelBond::go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip, Interaction* I)
+{
+	auto& geom = *static_cast<ScGeom*>(ig.get());
+	auto& phys = *static_cast<ParallelBondPhys*>(ip.get());
+	const Real un = geom.penetrationDepth;
+	if (!phys.isBonded() && un < 0) return false;
+
+	const Body&     b1 = *Body::byId(I->getId1(), scene);
+	const Body&     b2 = *Body::byId(I->getId2(), scene);
+	const Vector3r& n  = geom.normal;
+	const Vector3r  du = geom.shearIncrement();
+
+	// Contact: linear springs, no tension, Coulomb slider.
+	geom.rotate(phys.contactShearForce);
+	if (un > 0) {
+		phys.contactNormalForce = phys.contactKn * un;
+		phys.contactShearForce -= phys.contactKs * du;
+		phys.isSlipping = toppling::coulombSlip(phys.contactShearForce, phys.contactNormalForce * phys.tangensOfFrictionAngle);
+	} else {
+		phys.contactNormalForce = 0;
+		phys.contactShearForce  = Vector3r::Zero();
+		phys.isSlipping         = false;
+	}
+
+	const Real spin = (b2.state->angVel - b1.state->angVel).z() * scene->dt;
+	if (phys.isBonded() && !updateBond(*I, geom, phys, du, spin) && un < 0) return false;
+
+	// Dashpots on the normal relative velocity (positive when separating).
+	const Real vn        = toppling::relativeVelocity(*b1.state, *b2.state, geom.contactPoint).dot(n);
+	const Real c         = (un > 0 ? phys.contactDamping : 0) + (phys.isBonded() ? phys.bondDamping : 0);
+	const Real dampingFn = -c * vn;
+
+	phys.normalForce = (phys.contactNormalForce + phys.bondNormalForce + dampingFn) * n;
+	phys.shearForce  = phys.contactShearForce + phys.bondShearForce;
+	if (!phys.normalForce.allFinite() || !phys.shearForce.allFinite() || !math::isfinite(phys.bondMoment)) {
+		reportInstability(*I);
+		return true;
+	}
+	applyForceAtContactPoint(-phys.normalForce - phys.shearForce, geom.contactPoint, I->getId1(), b1.state->pos, I->getId2(), b2.state->pos);
+	if (phys.bondMoment != 0) {
+		scene->forces.addTorque(I->getId1(), Vector3r(0, 0, -phys.bondMoment));
+		scene->forces.addTorque(I->getId2(), Vector3r(0, 0, phys.bondMoment));
+	}
+	return true;
+}
+
+// Advances the bond by one step; false when it broke (the break is recorded).
+bool Law2_ScGeom_ParallelBondPhys_ParallelBond::updateBond(
+        const Interaction& I, ScGeom& geom, ParallelBondPhys& phys, const Vector3r& du, Real spin)
+{
+	const Real A = phys.bondArea, Ib = phys.bondInertia;
+	geom.rotate(phys.bondShearForce);
+	phys.bondNormalForce = phys.bondKn * A * (geom.penetrationDepth - phys.bondRefOverlap);
+	phys.bondShearForce -= phys.bondKs * A * du;
+	phys.bondMoment -= phys.bondKn * Ib * spin;
+
+	const Real sigma   = phys.bondNormalForce / A; // compression positive
+	phys.bondSigmaMax  = -sigma + math::abs(phys.bondMoment) * phys.bondRadius / Ib;
+	phys.bondTauMax    = phys.bondShearForce.norm() / A;
+	int        mode    = ParallelBondPhys::intact;
+	if (phys.bondSigmaMax >= phys.bondTensileStrength) mode = ParallelBondPhys::brokenTension;
+	else if (phys.bondTauMax >= phys.bondCohesion + sigma * phys.bondTanFriction)
+		mode = ParallelBondPhys::brokenShear;
+	if (mode == ParallelBondPhys::intact) return true;
+
+	recordBreak(I, geom.contactPoint, mode, phys.bondEnergy());
+	phys.removeBond(mode);
+	return false;
+}
+
+void Law2_ScGeom_ParallelBondPhys_ParallelBond::recordBreak(const Interaction& I, const Vector3r& where, int mode, Real energy)
+{
+#pragma omp critical(toppling_bond_breaks)
+	{
+		breakTime.push_back(scene->time);
+		breakPosition.push_back(where);
+		breakMode.push_back(mode);
+		breakEnergy.push_back(energy);
+		breakId1.push_back(I.getId1());
+		breakId2.push_back(I.getId2());
+	}
+}
+
+void Law2_ScGeom_ParallelBondPhys_ParallelBond::reportInstability(const Interaction& I)
+{
+#pragma omp critical(toppling_instability)
+	if (!unstable) {
+		unstable          = true;
+		scene->stopAtIter = scene->iter + 1;
+		LOG_ERROR(
+		        "Non-finite force between bodies " << I.getId1() << " and " << I.getId2() << " at iteration " << scene->iter
+		                                           << ": the run is unstable and was stopped. Lower O.dt (or use GlobalStiffnessTimeStepper "
+		                                              "with timestepSafetyCoefficient < 1) or raise the damping.");
+	}
+}
+
+Real Law2_ScGeom_ParallelBondPhys_ParallelBond::elasticEnergy() const
+{
+	Real energy = 0;
+	for (const auto& I : *scene->interactions) {
+		if (!I->isReal()) continue;
+		if (const auto* phys = dynamic_cast<const ParallelBondPhys*>(I->phys.get())) energy += phys->contactEnergy() + phys->bondEnergy();
+	}
+	return energy;
+}
+
+int Law2_ScGeom_ParallelBondPhys_ParallelBond::countBonds(int state) const
+{
+	int count = 0;
+	for (const auto& I : *scene->interactions) {
+		if (!I->isReal()) continue;
+		if (const auto* phys = dynamic_cast<const ParallelBondPhys*>(I->phys.get())) count += (phys->bondState == state);
+	}
+	return count;
+}
+
+} // namespace yade

@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# Install the Debian packages, fetch YADE's source and build YADE with the plugin.
+# Idempotent: a second run (or a second clone on the same machine) reuses the cache in
+# ${TOPPLING_CACHE:-~/.cache/toppling} and recompiles only what changed.
+set -euo pipefail
+repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+start=$(date +%s)
+
+mapfile -t packages < <(grep -v '^\s*#' "$repo/scripts/apt-packages.txt" | sed '/^\s*$/d')
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "setup: installing ${missing[*]}"
+  sudo_cmd=(); [ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
+  "${sudo_cmd[@]}" apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"
+fi
+
+# Debian's python first: YADE's cmake must not see a pyenv interpreter.
+export PATH="/usr/bin:$PATH"
+cmake -S "$repo" -B "$repo/build" -DCMAKE_BUILD_TYPE=Release "$@"
+cmake --build "$repo/build" -j 2
+echo "setup: done in $(( $(date +%s) - start )) s"
