@@ -24,8 +24,8 @@ public:
 		"Coulomb friction $\\mu=\\tan$ ``frictionAngle``.\n\n"
 		"Bond (installed by :yref:`ParallelBondPhys.installBond`): $\\bar R = \\bar\\lambda\\min(R_1,R_2)$, $A=2\\bar Rt$, "
 		"$I=\\tfrac23\\bar R^3t$, $\\bar k^n = \\bar E_c/(R_1+R_2)$, $\\bar k^s=\\bar k^n/(\\bar k^n/\\bar k^s)$ [N/m³].\n\n"
-		"Two materials: disc stiffnesses in series; bond modulus and strengths take the smaller value; friction the "
-		"smaller angle.",
+		"Two materials: disc stiffnesses in series, stiffness ratios averaged, bond modulus, strengths, thickness "
+		"and friction angles the smaller value, damping ratios the larger.",
 		((Real, knKs, 1, Attr::triggerPostLoad, "Contact normal-to-shear stiffness ratio $k_n/k_s$ [-] (> 0)."))
 		((Real, thickness, 1, Attr::triggerPostLoad, "Disc thickness $t$ [m] (> 0); also sets disc mass $\\rho\\pi R^2t$ when discs are made by ``toppling.scene.disc``."))
 		((Real, normalDamping, 0, Attr::triggerPostLoad, "Contact normal critical damping ratio $\\beta_n$ [-], in [0,1)."))

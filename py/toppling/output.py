@@ -1,0 +1,56 @@
+"""Output every example writes: ``<out>/summary.json`` and PNG plots."""
+from __future__ import annotations
+
+import json
+import math
+import os
+from typing import Any
+
+import matplotlib
+
+matplotlib.use("Agg")  # headless: examples run under `yade -x -n`
+import matplotlib.pyplot as plt  # noqa: E402
+
+
+def output_dir(out: str) -> str:
+    """Create (if needed) and return the output folder."""
+    os.makedirs(out, exist_ok=True)
+    return out
+
+
+def comparison(measured: float, reference: float, unit: str) -> dict[str, Any]:
+    """A verification result: measured value against its reference, with relative error."""
+    rel = abs(measured - reference) / abs(reference) if reference else math.inf
+    return {"measured": measured, "reference": reference, "rel_error": rel, "unit": unit}
+
+
+def write_summary(out: str, inputs: dict[str, Any], **results: Any) -> str:
+    """Write ``<out>/summary.json`` with the run's inputs and results; returns its path."""
+    path = os.path.join(output_dir(out), "summary.json")
+    with open(path, "w") as f:
+        json.dump({"inputs": inputs, **results}, f, indent=2, default=float)
+    return path
+
+
+def table_inputs(table) -> dict[str, Any]:
+    """The parameters of ``yade.params.table`` as a plain dict."""
+    return {k: getattr(table, k) for k in dir(table) if not k.startswith("_")}
+
+
+def save_figure(fig, out: str, name: str) -> str:
+    """Save a matplotlib figure as ``<out>/<name>.png`` and close it."""
+    path = os.path.join(output_dir(out), name + ".png")
+    fig.savefig(path, dpi=120, bbox_inches="tight")
+    plt.close(fig)
+    return path
+
+
+def figure(xlabel: str, ylabel: str, title: str = ""):
+    """A new single-axes figure with labels."""
+    fig, ax = plt.subplots(figsize=(6, 4))
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    if title:
+        ax.set_title(title)
+    ax.grid(True, alpha=0.3)
+    return fig, ax

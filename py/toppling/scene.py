@@ -1,0 +1,80 @@
+"""Discs, walls and the standard engine list of a 2D toppling scene."""
+from __future__ import annotations
+
+import math
+from typing import Iterable, Sequence
+
+from yade import O, utils
+from yade.wrapper import (Bo1_Box_Aabb, Bo1_Sphere_Aabb, Bo1_Wall_Aabb, ForceResetter,
+                          GlobalStiffnessTimeStepper, Ig2_Box_Sphere_ScGeom,
+                          Ig2_Sphere_Sphere_ScGeom, Ig2_Wall_Sphere_ScGeom,
+                          InsertionSortCollider, InteractionLoop,
+                          Ip2_ParallelBondMat_ParallelBondMat_ParallelBondPhys,
+                          Law2_ScGeom_ParallelBondPhys_ParallelBond, NewtonIntegrator)
+
+PLANE_DOFS = 'zXY'  # discs move in the xy-plane and spin about z only
+
+
+def disc(center: Sequence[float], radius: float, material, fixed: bool = False):
+    """A YADE sphere standing for a disc of the material's thickness t.
+
+    Mass and inertia are the disc's, rho*pi*R^2*t and m*R^2/2 (not the sphere's), so that
+    2D dynamics match PFC2D/HDPAC.
+    """
+    if radius <= 0:
+        raise ValueError(f"disc radius = {radius} is invalid: it must be > 0")
+    body = utils.sphere((center[0], center[1], 0.0), radius, material=material, fixed=fixed)
+    set_disc_mass(body, material.thickness)
+    if not fixed:
+        body.state.blockedDOFs = PLANE_DOFS
+    return body
+
+
+def set_disc_mass(body, thickness: float) -> None:
+    """Give a sphere body the mass and polar inertia of a disc of the given thickness."""
+    radius = body.shape.radius
+    mass = body.material.density * math.pi * radius**2 * thickness
+    body.state.mass = mass
+    inertia = 0.5 * mass * radius**2
+    body.state.inertia = (inertia, inertia, inertia)
+
+
+def add_discs(discs: Iterable[tuple[float, float, float]], material) -> list[int]:
+    """Add discs given as (x, y, radius); returns their ids."""
+    return O.bodies.append([disc((x, y), r, material) for x, y, r in discs])
+
+
+def engines(gravity=(0.0, -9.81, 0.0), local_damping: float = 0.0,
+            timestepper: bool = True, safety: float = 0.5, extra: Sequence = ()) -> list:
+    """The engine list of a bonded-disc scene: collider, parallel-bond law, Newton.
+
+    ``local_damping`` is NewtonIntegrator's non-viscous damping (PFC's local damping);
+    ``timestepper`` adds GlobalStiffnessTimeStepper, which sees bond stiffness.
+    """
+    if not 0 <= local_damping < 1:
+        raise ValueError(f"local_damping = {local_damping} is invalid: it must be in [0, 1)")
+    if not 0 < safety <= 1:
+        raise ValueError(f"safety = {safety} is invalid: it must be in (0, 1]")
+    loop = [
+        ForceResetter(),
+        InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Wall_Aabb(), Bo1_Box_Aabb()]),
+        InteractionLoop(
+            [Ig2_Sphere_Sphere_ScGeom(), Ig2_Wall_Sphere_ScGeom(), Ig2_Box_Sphere_ScGeom()],
+            [Ip2_ParallelBondMat_ParallelBondMat_ParallelBondPhys()],
+            [Law2_ScGeom_ParallelBondPhys_ParallelBond()]),
+    ]
+    if timestepper:
+        loop.append(GlobalStiffnessTimeStepper(timestepSafetyCoefficient=safety,
+                                               timeStepUpdateInterval=100))
+    loop.append(NewtonIntegrator(gravity=gravity, damping=local_damping))
+    return loop + list(extra)
+
+
+def bond_law():
+    """The scene's parallel-bond Law2 functor (holds the break records)."""
+    for engine in O.engines:
+        if isinstance(engine, InteractionLoop):
+            for functor in engine.lawDispatcher.functors:
+                if isinstance(functor, Law2_ScGeom_ParallelBondPhys_ParallelBond):
+                    return functor
+    raise LookupError("no Law2_ScGeom_ParallelBondPhys_ParallelBond in O.engines; build them with toppling.scene.engines()")

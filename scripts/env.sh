@@ -1,0 +1,8 @@
+# Source me: makes the plugin-enabled YADE importable from Debian's python3
+# (e.g. `source scripts/env.sh && python3 -m pytest tests/python`).
+_toppling_repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+_toppling_cache=${TOPPLING_CACHE:-${XDG_CACHE_HOME:-$HOME/.cache}/toppling}
+export TOPPLING_REPO="$_toppling_repo"
+export PYTHONPATH="$_toppling_repo/py:$_toppling_cache/yade/lib/x86_64-linux-gnu/yade/py${PYTHONPATH:+:$PYTHONPATH}"
+export PATH="/usr/bin:$PATH"
+unset _toppling_repo _toppling_cache

@@ -1,0 +1,37 @@
+"""Fixtures for physics tests run in YADE's Python (``source scripts/env.sh`` first)."""
+import json
+import os
+import subprocess
+import sys
+
+import pytest
+
+REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+sys.path.insert(0, os.path.join(REPO, "py"))
+os.environ["OMP_NUM_THREADS"] = "1"  # bitwise-reproducible runs (save/load test)
+
+import yade  # noqa: E402,F401  (loads the plugin-enabled YADE, our classes included)
+from yade import O  # noqa: E402
+
+
+@pytest.fixture
+def empty_scene():
+    """A fresh, empty YADE scene."""
+    O.reset()
+    yield O
+    O.reset()
+
+
+def run_example(path: str, tmp_path, threads: int = 1, **params) -> dict:
+    """Run ``./yade -x -n <example>`` headless with ``params`` (through a one-line
+    readParamsFromTable table) and return its ``summary.json``."""
+    params = {"out": str(tmp_path / "out"), **params}
+    table = tmp_path / "params.table"
+    table.write_text(" ".join(params) + "\n" + " ".join(repr(v) if isinstance(v, str) else str(v)
+                                                         for v in params.values()) + "\n")
+    env = dict(os.environ, YADE_BATCH=f"{table}:2")
+    proc = subprocess.run([os.path.join(REPO, "yade"), "-x", "-n", "-j", str(threads), os.path.join(REPO, path)],
+                          env=env, capture_output=True, text=True, timeout=600)
+    assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-3000:]
+    with open(os.path.join(params["out"], "summary.json")) as f:
+        return json.load(f)
