@@ -34,6 +34,19 @@ namespace toppling {
 		return (s2.vel + s2.angVel.cross(contactPoint - s2.pos)) - (s1.vel + s1.angVel.cross(contactPoint - s1.pos));
 	}
 
+	// Component of v orthogonal to the unit vector n.
+	inline Vector3r tangential(const Vector3r& v, const Vector3r& n) { return v - v.dot(n) * n; }
+
+	// A stable explicit DEM step moves contacting bodies by a small fraction of their size; a
+	// relative displacement of a tenth of the smaller radius in one step means the time step is
+	// far too large (the run is blowing up). Non-positive radii (walls) are ignored.
+	inline bool stepIsSmall(const Vector3r& relativeVelocity, Real dt, Real r1, Real r2)
+	{
+		const Real r = (r1 > 0 && r2 > 0) ? math::min(r1, r2) : math::max(r1, r2);
+		const Real d = relativeVelocity.norm() * dt;
+		return math::isfinite(d) && (r <= 0 || d < 0.1 * r);
+	}
+
 	// Coulomb slider: scales the shear force back onto |Fs| <= limit; true while slipping.
 	inline bool coulombSlip(Vector3r& shearForce, Real limit)
 	{

@@ -1,12 +1,14 @@
 #include "ParallelBond.hpp"
 #include "ContactPieces.hpp"
 #include "Validation.hpp"
+#include <core/Omega.hpp>
 #include <core/Scene.hpp>
 
 namespace yade {
 
 YADE_PLUGIN((ParallelBondMat)(ParallelBondPhys)(Ip2_ParallelBondMat_ParallelBondMat_ParallelBondPhys)(Law2_ScGeom_ParallelBondPhys_ParallelBond));
 CREATE_LOGGER(Law2_ScGeom_ParallelBondPhys_ParallelBond);
+CREATE_LOGGER(Ip2_ParallelBondMat_ParallelBondMat_ParallelBondPhys);
 
 using toppling::Range;
 
@@ -75,8 +77,14 @@ void Ip2_ParallelBondMat_ParallelBondMat_ParallelBondPhys::go(
 	if (interaction->phys) return;
 	const auto* mat1 = YADE_CAST<ParallelBondMat*>(m1.get());
 	const auto* mat2 = YADE_CAST<ParallelBondMat*>(m2.get());
-	mat1->validate();
-	mat2->validate();
+	try {
+		mat1->validate();
+		mat2->validate();
+	} catch (const std::invalid_argument& e) { // inherited attributes (young, frictionAngle) set after construction
+		// Throwing here would abort inside InteractionLoop's OpenMP loop: stop the run instead.
+		LOG_ERROR(e.what() << " The run was stopped.");
+		scene->stopAtIter = scene->iter + 1;
+	}
 	auto phys         = shared_ptr<ParallelBondPhys>(new ParallelBondPhys());
 	interaction->phys = phys;
 
@@ -121,8 +129,15 @@ bool Law2_ScGeom_ParallelBondPhys_ParallelBond::go(shared_ptr<IGeom>& ig, shared
 
 	const Body&     b1 = *Body::byId(I->getId1(), scene);
 	const Body&     b2 = *Body::byId(I->getId2(), scene);
-	const Vector3r& n  = geom.normal;
-	const Vector3r  du = geom.shearIncrement();
+	const Vector3r& n    = geom.normal;
+	const Vector3r  vRel = toppling::relativeVelocity(*b1.state, *b2.state, geom.contactPoint);
+	if (!toppling::stepIsSmall(vRel, scene->dt, geom.refR1, geom.refR2)) {
+		reportInstability(*I);
+		return true;
+	}
+	// Shear increment from the contact point's relative velocity (PFC), not ScGeom's radius-based
+	// one: the same lever arms as the torques applied below, so the law does no spurious work.
+	const Vector3r du = toppling::tangential(vRel * scene->dt, n);
 
 	// Contact: linear springs, no tension, Coulomb slider.
 	geom.rotate(phys.contactShearForce);
@@ -140,7 +155,7 @@ bool Law2_ScGeom_ParallelBondPhys_ParallelBond::go(shared_ptr<IGeom>& ig, shared
 	if (phys.isBonded() && !updateBond(*I, geom, phys, du, spin) && un < 0) return false;
 
 	// Dashpots on the normal relative velocity (positive when separating).
-	const Real vn        = toppling::relativeVelocity(*b1.state, *b2.state, geom.contactPoint).dot(n);
+	const Real vn        = vRel.dot(n);
 	const Real c         = (un > 0 ? phys.contactDamping : 0) + (phys.isBonded() ? phys.bondDamping : 0);
 	const Real dampingFn = -c * vn;
 
@@ -202,26 +217,51 @@ void Law2_ScGeom_ParallelBondPhys_ParallelBond::reportInstability(const Interact
 		unstable          = true;
 		scene->stopAtIter = scene->iter + 1;
 		LOG_ERROR(
-		        "Non-finite force between bodies " << I.getId1() << " and " << I.getId2() << " at iteration " << scene->iter
-		                                           << ": the run is unstable and was stopped. Lower O.dt (or use GlobalStiffnessTimeStepper "
-		                                              "with timestepSafetyCoefficient < 1) or raise the damping.");
+		        "Bodies " << I.getId1() << " and " << I.getId2() << " moved more than a tenth of a radius relative to each other in one step, "
+		                  "or their force is not finite, at iteration " << scene->iter
+		                  << ": the run is unstable and was stopped. Lower O.dt (or use GlobalStiffnessTimeStepper with "
+		                     "timestepSafetyCoefficient < 1) or raise the damping.");
 	}
 }
 
 Real Law2_ScGeom_ParallelBondPhys_ParallelBond::elasticEnergy() const
 {
 	Real energy = 0;
-	for (const auto& I : *scene->interactions) {
+	for (const auto& I : *Omega::instance().getScene()->interactions) { // also before the first step
 		if (!I->isReal()) continue;
 		if (const auto* phys = dynamic_cast<const ParallelBondPhys*>(I->phys.get())) energy += phys->contactEnergy() + phys->bondEnergy();
 	}
 	return energy;
 }
 
+Real Law2_ScGeom_ParallelBondPhys_ParallelBond::criticalTimeStep() const
+{
+	const Scene&      sc = *Omega::instance().getScene();
+	std::vector<Real> translational(sc.bodies->size(), 0), rotational(sc.bodies->size(), 0);
+	for (const auto& I : *sc.interactions) {
+		if (!I->isReal()) continue;
+		const auto* phys = dynamic_cast<const ParallelBondPhys*>(I->phys.get());
+		const auto* geom = dynamic_cast<const GenericSpheresContact*>(I->geom.get());
+		if (!phys || !geom) continue;
+		const Real k = math::max(phys->kn, phys->ks);
+		translational[I->getId1()] += k;
+		translational[I->getId2()] += k;
+		rotational[I->getId1()] += phys->kr + phys->ks * math::pow(geom->refR1, 2);
+		rotational[I->getId2()] += phys->kr + phys->ks * math::pow(geom->refR2, 2);
+	}
+	Real dt2 = std::numeric_limits<Real>::infinity(); // squared
+	for (const auto& b : *sc.bodies) {
+		if (!b || !b->isDynamic()) continue;
+		if (translational[b->id] > 0) dt2 = math::min(dt2, b->state->mass / translational[b->id]);
+		if (rotational[b->id] > 0) dt2 = math::min(dt2, b->state->inertia.z() / rotational[b->id]);
+	}
+	return 1.41044 * math::sqrt(dt2); // sqrt(2), as GlobalStiffnessTimeStepper
+}
+
 int Law2_ScGeom_ParallelBondPhys_ParallelBond::countBonds(int state) const
 {
 	int count = 0;
-	for (const auto& I : *scene->interactions) {
+	for (const auto& I : *Omega::instance().getScene()->interactions) {
 		if (!I->isReal()) continue;
 		if (const auto* phys = dynamic_cast<const ParallelBondPhys*>(I->phys.get())) count += (phys->bondState == state);
 	}

@@ -98,6 +98,7 @@ class Ip2_ParallelBondMat_ParallelBondMat_ParallelBondPhys : public IPhysFunctor
 public:
 	void go(const shared_ptr<Material>& m1, const shared_ptr<Material>& m2, const shared_ptr<Interaction>& interaction) override;
 	FUNCTOR2D(ParallelBondMat, ParallelBondMat);
+	DECLARE_LOGGER;
 	// clang-format off
 	YADE_CLASS_BASE_DOC(Ip2_ParallelBondMat_ParallelBondMat_ParallelBondPhys, IPhysFunctor,
 		"Creates :yref:`ParallelBondPhys` (unbonded) from two :yref:`ParallelBondMat`; see the material for the formulas.");
@@ -110,6 +111,7 @@ public:
 	bool go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip, Interaction* I) override;
 	Real elasticEnergy() const;
 	int  countBonds(int state) const;
+	Real criticalTimeStep() const;
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(Law2_ScGeom_ParallelBondPhys_ParallelBond, LawFunctor,
 		"Parallel-bond law (Potyondy & Cundall 2004, PFC2D). Contact: $F_n=k_nu_n$ for $u_n>0$, incremental shear "
@@ -118,19 +120,24 @@ public:
 		"$\\bar\\sigma_{max}=-\\bar F_n/A+|\\bar M|\\bar R/I\\ge\\bar\\sigma_c$, else in shear when "
 		"$|\\bar F_s|/A\\ge\\bar c+\\sigma\\tan\\bar\\phi$ ($\\sigma=\\bar F_n/A$); the contact then goes on as "
 		"frictional and the break is appended to the ``break*`` lists. Dashpots $c\\,v_n$ act while touching "
-		"(contact) and while bonded (bond). A non-finite force stops the run (``O.stopAtIter``) and sets "
-		":yref:`unstable<Law2_ScGeom_ParallelBondPhys_ParallelBond.unstable>`.",
+		"(contact) and while bonded (bond). A pair moving more than a tenth of its smaller radius relative to each "
+		"other in one step (a time step far too large), or a non-finite force, stops the run (``O.stopAtIter``) "
+		"with a message and sets :yref:`unstable<Law2_ScGeom_ParallelBondPhys_ParallelBond.unstable>`.",
 		((vector<Real>, breakTime, , , "Simulated time of each bond break [s]."))
 		((vector<Vector3r>, breakPosition, , , "Bond centre at each break [m]."))
 		((vector<int>, breakMode, , , "Mode of each break: 2 tension, 3 shear (as :yref:`ParallelBondPhys.bondState`)."))
 		((vector<Real>, breakEnergy, , , "Elastic energy released by each break [J]."))
 		((vector<int>, breakId1, , , "First body of each broken bond."))
 		((vector<int>, breakId2, , , "Second body of each broken bond."))
-		((bool, unstable, false, , "Set when a force became NaN or infinite; the run was stopped."))
+		((bool, unstable, false, , "Set when the run went unstable and was stopped (see above)."))
 		,
 		/*ctor*/,
 		.def("elasticEnergy", &Law2_ScGeom_ParallelBondPhys_ParallelBond::elasticEnergy,
 			"Elastic energy in all contacts and bonds of this law [J].")
+		.def("criticalTimeStep", &Law2_ScGeom_ParallelBondPhys_ParallelBond::criticalTimeStep,
+			"Critical time step from the stiffness of every contact and bond, loaded or not [s]: "
+			":yref:`GlobalStiffnessTimeStepper`'s estimate (safety 1), which skips interactions carrying no force "
+			"and so misses freshly installed, stress-free bonds. ``toppling.bonding`` uses it after bonding.")
 		.def("countBonds", &Law2_ScGeom_ParallelBondPhys_ParallelBond::countBonds, (boost::python::arg("state") = 1),
 			"Number of interactions whose :yref:`ParallelBondPhys.bondState` equals ``state``.")
 	);

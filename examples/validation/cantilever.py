@@ -16,7 +16,6 @@ bonds' shear stiffness is G A / L. Discrete-beam error (midpoint rule over 10 se
 import math
 
 from yade import O
-from yade.params import table
 from yade.utils import readParamsFromTable
 from yade.wrapper import ParallelBondMat
 
@@ -24,6 +23,7 @@ from toppling import bonding, output, scene
 
 readParamsFromTable(force=4448.0, moment=11300.0, young=68.95e9, shear_modulus=26e9, discs=11,
                     out="results/cantilever", noTableOk=True)
+from yade.params import table  # noqa: E402  (filled by readParamsFromTable)
 
 INCH = 0.0254
 L, T, H = 200 * INCH, 1 * INCH, 16 * INCH

@@ -14,7 +14,6 @@ mid-step), so that its velocity at time t is -g t exactly.
 import math
 
 from yade import O, utils
-from yade.params import table
 from yade.utils import readParamsFromTable
 from yade.wrapper import ParallelBondMat, PyRunner
 
@@ -22,6 +21,7 @@ from toppling import output, scene
 
 readParamsFromTable(radius=50.0, density=1000.0, kn=1.35e9, kn_boundary=1.35e11, drop=1.0,
                     dt=3e-4, steps=40000, g=9.81, out="results/free_fall", noTableOk=True)
+from yade.params import table  # noqa: E402  (filled by readParamsFromTable)
 
 THICKNESS = 1.0
 disc_mat = ParallelBondMat(young=table.kn / (2 * THICKNESS), density=table.density, thickness=THICKNESS)

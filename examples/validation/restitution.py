@@ -9,7 +9,6 @@ zero overlap.
 import math
 
 from yade import O, utils
-from yade.params import table
 from yade.utils import readParamsFromTable
 from yade.wrapper import ParallelBondMat
 
@@ -17,6 +16,7 @@ from toppling import output, scene
 
 readParamsFromTable(beta=0.13, radius=0.01, density=2880.0, young=1e8, speed=1.0,
                     out="results/restitution", noTableOk=True)
+from yade.params import table  # noqa: E402  (filled by readParamsFromTable)
 
 THICKNESS = 1.0
 mat = ParallelBondMat(young=table.young, density=table.density, thickness=THICKNESS, normalDamping=table.beta)

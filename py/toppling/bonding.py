@@ -7,6 +7,8 @@ from typing import Iterator, Optional, Sequence
 from yade import O, utils
 from yade.wrapper import Sphere
 
+from toppling.scene import limit_timestep
+
 
 def _sphere_ids(ids: Optional[Sequence[int]]) -> list[int]:
     bodies = O.bodies if ids is None else (O.bodies[i] for i in ids)
@@ -56,4 +58,5 @@ def bond_within_gap(gap: float = 0.0, ids: Optional[Sequence[int]] = None) -> in
         if interaction.phys.bondState != 1:
             interaction.phys.installBond(interaction.geom.penetrationDepth)
             count += 1
+    limit_timestep()
     return count

@@ -70,6 +70,24 @@ def engines(gravity=(0.0, -9.81, 0.0), local_damping: float = 0.0,
     return loop + list(extra)
 
 
+def limit_timestep() -> None:
+    """Make GlobalStiffnessTimeStepper's time step account for stress-free bonds.
+
+    It skips interactions that carry no force, so right after bonding it would ignore the new
+    bonds; the law's criticalTimeStep() counts them. Called by toppling.bonding.
+    """
+    steppers = [e for e in O.engines if isinstance(e, GlobalStiffnessTimeStepper)]
+    if not steppers:
+        return
+    stepper = steppers[0]
+    dt = stepper.timestepSafetyCoefficient * bond_law().criticalTimeStep()
+    if math.isinf(dt):
+        return
+    stepper.defaultDt = dt  # used while nothing carries force (e.g. the first step)
+    stepper.previousDt = min(stepper.previousDt, dt)
+    O.dt = min(O.dt, dt) if O.iter > 0 else dt
+
+
 def bond_law():
     """The scene's parallel-bond Law2 functor (holds the break records)."""
     for engine in O.engines:

@@ -17,26 +17,37 @@ def material(**overrides) -> ParallelBondMat:
     return ParallelBondMat(**params)
 
 
-def hex_lattice(rows: int, cols: int, mat, fixed_bottom: bool = False) -> list[int]:
-    """Touching discs of radius R on a triangular lattice, all bonded."""
+def hex_lattice(rows: int, cols: int, mat, fixed_bottom: bool = False, gap: float = 0.0) -> list[int]:
+    """Discs of radius R on a triangular lattice, ``gap`` apart (touching by default)."""
     ids = []
+    pitch = 2 * R + gap
     for j in range(rows):
         for i in range(cols):
-            x = 2 * R * i + (R if j % 2 else 0)
-            y = math.sqrt(3) * R * j
+            x = pitch * i + (pitch / 2 if j % 2 else 0)
+            y = math.sqrt(3) / 2 * pitch * j
             ids.append(O.bodies.append(scene.disc((x, y), R, mat, fixed=fixed_bottom and j == 0)))
     return ids
 
 
-def bonded_lattice(rows, cols, mat, gravity=(0, 0, 0), fixed_bottom=False, **engine_kw) -> list[int]:
-    """A hex lattice with engines and every touching pair bonded."""
-    ids = hex_lattice(rows, cols, mat, fixed_bottom)
+def bonded_lattice(rows, cols, mat, gravity=(0, 0, 0), fixed_bottom=False, gap=0.0, **engine_kw) -> list[int]:
+    """A hex lattice with engines and every neighbour pair bonded."""
+    ids = hex_lattice(rows, cols, mat, fixed_bottom, gap)
     O.engines = scene.engines(gravity=gravity, **engine_kw)
-    bonding.bond_within_gap(gap=1e-6 * R)
+    bonding.bond_within_gap(gap=gap + 1e-6 * R)
     return ids
 
 
-def kinetic_energy() -> float:
-    """Translational + rotational kinetic energy of the discs (disc mass and inertia)."""
-    return sum(0.5 * b.state.mass * b.state.vel.squaredNorm() + 0.5 * b.state.inertia[2] * b.state.angVel[2] ** 2
-               for b in O.bodies if b.isDynamic)
+def leapfrog_energy(law) -> float:
+    """Total energy at the current positions, measured over one step.
+
+    YADE integrates with leapfrog: velocities live at half steps. The energy leapfrog conserves
+    for linear springs uses the product of the velocities before and after the positions,
+    sum(m v(t-dt/2).v(t+dt/2))/2; after the step the law's forces belong to those positions.
+    """
+    dynamic = [b for b in O.bodies if b.dynamic]
+    before = [(tuple(b.state.vel), b.state.angVel[2]) for b in dynamic]  # copies: state.vel is a live view
+    O.step()
+    kinetic = sum(0.5 * b.state.mass * sum(x * y for x, y in zip(v, b.state.vel))
+                  + 0.5 * b.state.inertia[2] * w * b.state.angVel[2] for b, (v, w) in zip(dynamic, before))
+    return kinetic + law.elasticEnergy()
+

@@ -2,7 +2,7 @@
 import random
 
 import pytest
-from lattice import R, bonded_lattice, kinetic_energy, material
+from lattice import R, bonded_lattice, leapfrog_energy, material
 from yade import O
 
 from toppling import scene
@@ -15,25 +15,37 @@ def shake(ids, speed=0.01, seed=1):
         O.bodies[i].state.angVel = (0, 0, rng.uniform(-speed, speed) / R)
 
 
-def test_undamped_lattice_conserves_energy_with_auto_timestep(empty_scene):
+@pytest.mark.parametrize("gap, safety, tolerance", [
+    # Bonds only (discs 1 % apart): a linear system, whose leapfrog energy is conserved exactly
+    # but for geometric nonlinearity; measured drift ~1e-6.
+    (0.02 * R, 0.5, 1e-3),
+    # Touching discs: contacts switching on and off within a step cost O(dt) energy.
+    (0.0, 0.3, 0.01),
+])
+def test_undamped_lattice_conserves_energy_with_auto_timestep(empty_scene, gap, safety, tolerance):
     # Bonds 20x stiffer than contacts: a time step blind to bond stiffness would blow up.
-    ids = bonded_lattice(8, 8, material(bondYoung=2e10), safety=0.5)
+    # Frictionless contacts: Coulomb slip at touching, barely loaded contacts would dissipate.
+    ids = bonded_lattice(8, 8, material(bondYoung=2e10, frictionAngle=0.0), gap=gap, safety=safety)
     shake(ids)
     law = scene.bond_law()
     bonds = law.countBonds(1)
-    e0 = kinetic_energy() + law.elasticEnergy()
+    e0 = leapfrog_energy(law)
     drift = 0.0
     for _ in range(100):
-        O.run(100, True)
-        drift = max(drift, abs(kinetic_energy() + law.elasticEnergy() - e0) / e0)
-    assert O.iter == 10_000
-    assert law.countBonds(1) == bonds > 0 and not law.breakMode
-    assert drift < 0.01
+        O.run(99, True)
+        drift = max(drift, abs(leapfrog_energy(law) - e0) / e0)
+    assert O.iter == 10_001
+    assert law.countBonds(1) == bonds > 100 and not law.breakMode
+    assert drift < tolerance
 
 
-def test_save_load_continues_identically(empty_scene, tmp_path):
+@pytest.mark.parametrize("timestepper", [False, True])
+def test_save_load_continues_identically(empty_scene, tmp_path, timestepper):
     mat = material(bondTensileStrength=2e4, bondCohesion=2e4)  # weak: bonds break under gravity
-    ids = bonded_lattice(6, 10, mat, gravity=(0, -9.81e3, 0), fixed_bottom=True, local_damping=0.1)
+    ids = bonded_lattice(6, 10, mat, gravity=(0, -9.81e3, 0), fixed_bottom=True, local_damping=0.1,
+                         timestepper=timestepper)
+    if not timestepper:
+        O.dt = 2e-7
     O.run(200, True)
     saved = str(tmp_path / "mid.yade.gz")
     O.save(saved)
@@ -42,8 +54,15 @@ def test_save_load_continues_identically(empty_scene, tmp_path):
     reference_breaks = list(scene.bond_law().breakTime)
     O.load(saved)
     O.run(300, True)
-    assert [O.bodies[i].state.pos for i in ids] == reference
-    assert list(scene.bond_law().breakTime) == reference_breaks
+    assert len(reference_breaks) > 20
+    if timestepper:
+        # YADE's collider rebuilds its interaction order after O.load, so new contacts are summed
+        # in another order: equal to round-off, not bitwise (also so with YADE's own laws).
+        assert max((O.bodies[i].state.pos - r).norm() for i, r in zip(ids, reference)) < 1e-12 * R
+        assert len(scene.bond_law().breakTime) == len(reference_breaks)
+    else:
+        assert [O.bodies[i].state.pos for i in ids] == reference
+        assert list(scene.bond_law().breakTime) == reference_breaks
 
 
 def test_unstable_run_stops_with_a_message(empty_scene):
@@ -53,23 +72,40 @@ def test_unstable_run_stops_with_a_message(empty_scene):
     O.run(5000, True)
     law = scene.bond_law()
     assert law.unstable
-    assert O.iter < 5000
-    assert all(abs(O.bodies[i].state.pos[0]) < 1e300 for i in ids)
+    assert O.iter < 50
+    assert all(abs(O.bodies[i].state.pos[0]) < 1.0 for i in ids)  # stopped before flying apart
 
 
-@pytest.mark.parametrize("attribute, value, message", [
+BAD_VALUES = [
     ("young", -1.0, "> 0"),
+    ("frictionAngle", -0.1, "[0, pi/2)"),
     ("normalDamping", 1.0, "[0, 1)"),
     ("bondNormalDamping", -0.1, "[0, 1)"),
-    ("frictionAngle", -0.1, "[0, pi/2)"),
     ("bondRadiusMultiplier", 0.0, "> 0"),
     ("bondTensileStrength", -5.0, ">= 0"),
     ("bondYoung", float("nan"), ">= 0"),
-])
+]
+
+
+@pytest.mark.parametrize("attribute, value, message", BAD_VALUES)
 def test_bad_material_values_are_rejected(attribute, value, message):
     with pytest.raises(ValueError) as err:
         material(**{attribute: value})
     assert f"ParallelBondMat.{attribute}" in str(err.value) and message in str(err.value)
+
+
+@pytest.mark.parametrize("attribute, value, message", BAD_VALUES[2:])
+def test_bad_values_set_later_are_rejected(attribute, value, message):
+    with pytest.raises(ValueError, match=attribute):
+        setattr(material(), attribute, value)
+
+
+@pytest.mark.parametrize("attribute, value, message", BAD_VALUES[:2])
+def test_bad_inherited_values_set_later_stop_the_run(empty_scene, attribute, value, message):
     mat = material()
-    with pytest.raises(ValueError):
-        setattr(mat, attribute, value)
+    ids = bonded_lattice(2, 2, mat, timestepper=False)
+    setattr(mat, attribute, value)  # YADE's own setter for ElastMat/FrictMat attributes
+    O.interactions.clear()
+    O.dt = 1e-7
+    O.run(100, True)
+    assert O.iter < 100
