@@ -7,7 +7,6 @@
 namespace yade {
 
 YADE_PLUGIN((ParallelBondMat)(ParallelBondPhys)(Ip2_ParallelBondMat_ParallelBondMat_ParallelBondPhys)(Law2_ScGeom_ParallelBondPhys_ParallelBond));
-CREATE_LOGGER(Law2_ScGeom_ParallelBondPhys_ParallelBond);
 CREATE_LOGGER(Ip2_ParallelBondMat_ParallelBondMat_ParallelBondPhys);
 
 using toppling::Range;
@@ -195,33 +194,6 @@ bool Law2_ScGeom_ParallelBondPhys_ParallelBond::updateBond(
 	recordBreak(I, geom.contactPoint, mode, phys.bondEnergy());
 	phys.removeBond(mode);
 	return false;
-}
-
-void Law2_ScGeom_ParallelBondPhys_ParallelBond::recordBreak(const Interaction& I, const Vector3r& where, int mode, Real energy)
-{
-#pragma omp critical(toppling_bond_breaks)
-	{
-		breakTime.push_back(scene->time);
-		breakPosition.push_back(where);
-		breakMode.push_back(mode);
-		breakEnergy.push_back(energy);
-		breakId1.push_back(I.getId1());
-		breakId2.push_back(I.getId2());
-	}
-}
-
-void Law2_ScGeom_ParallelBondPhys_ParallelBond::reportInstability(const Interaction& I)
-{
-#pragma omp critical(toppling_instability)
-	if (!unstable) {
-		unstable          = true;
-		scene->stopAtIter = scene->iter + 1;
-		LOG_ERROR(
-		        "Bodies " << I.getId1() << " and " << I.getId2() << " moved more than a tenth of a radius relative to each other in one step, "
-		                  "or their force is not finite, at iteration " << scene->iter
-		                  << ": the run is unstable and was stopped. Lower O.dt (or use GlobalStiffnessTimeStepper with "
-		                     "timestepSafetyCoefficient < 1) or raise the damping.");
-	}
 }
 
 Real Law2_ScGeom_ParallelBondPhys_ParallelBond::elasticEnergy() const

@@ -7,6 +7,7 @@
 #include <pkg/common/ElastMat.hpp>
 #include <pkg/dem/FrictPhys.hpp>
 #include <pkg/dem/ScGeom.hpp>
+#include "BreakingLaw.hpp"
 #include <limits>
 
 namespace yade {
@@ -106,31 +107,22 @@ public:
 };
 REGISTER_SERIALIZABLE(Ip2_ParallelBondMat_ParallelBondMat_ParallelBondPhys);
 
-class Law2_ScGeom_ParallelBondPhys_ParallelBond : public LawFunctor {
+class Law2_ScGeom_ParallelBondPhys_ParallelBond : public BreakingLaw {
 public:
 	bool go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip, Interaction* I) override;
 	Real elasticEnergy() const;
 	int  countBonds(int state) const;
 	Real criticalTimeStep() const;
 	// clang-format off
-	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(Law2_ScGeom_ParallelBondPhys_ParallelBond, LawFunctor,
+	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(Law2_ScGeom_ParallelBondPhys_ParallelBond, BreakingLaw,
 		"Parallel-bond law (Potyondy & Cundall 2004, PFC2D). Contact: $F_n=k_nu_n$ for $u_n>0$, incremental shear "
-		"rotated with the contact frame, $|F_s|\\le\\mu F_n$. Bond: $\\bar F_n=\\bar k^nA(u_n-u_{n,0})$, "
-		"$\\Delta\\bar F_s=-\\bar k^sA\\Delta u_s$, $\\Delta\\bar M=-\\bar k^nI\\Delta\\theta_z$. It breaks in tension when "
-		"$\\bar\\sigma_{max}=-\\bar F_n/A+|\\bar M|\\bar R/I\\ge\\bar\\sigma_c$, else in shear when "
-		"$|\\bar F_s|/A\\ge\\bar c+\\sigma\\tan\\bar\\phi$ ($\\sigma=\\bar F_n/A$); the contact then goes on as "
-		"frictional and the break is appended to the ``break*`` lists. Dashpots $c\\,v_n$ act while touching "
-		"(contact) and while bonded (bond). A pair moving more than a tenth of its smaller radius relative to each "
-		"other in one step (a time step far too large), or a non-finite force, stops the run (``O.stopAtIter``) "
-		"with a message and sets :yref:`unstable<Law2_ScGeom_ParallelBondPhys_ParallelBond.unstable>`.",
-		((vector<Real>, breakTime, , , "Simulated time of each bond break [s]."))
-		((vector<Vector3r>, breakPosition, , , "Bond centre at each break [m]."))
-		((vector<int>, breakMode, , , "Mode of each break: 2 tension, 3 shear (as :yref:`ParallelBondPhys.bondState`)."))
-		((vector<Real>, breakEnergy, , , "Elastic energy released by each break [J]."))
-		((vector<int>, breakId1, , , "First body of each broken bond."))
-		((vector<int>, breakId2, , , "Second body of each broken bond."))
-		((bool, unstable, false, , "Set when the run went unstable and was stopped (see above)."))
-		,
+		"(from the contact point's relative velocity, rotated with the contact frame), $|F_s|\\le\\mu F_n$. Bond: "
+		"$\\bar F_n=\\bar k^nA(u_n-u_{n,0})$, $\\Delta\\bar F_s=-\\bar k^sA\\Delta u_s$, $\\Delta\\bar M=-\\bar k^nI\\Delta\\theta_z$. "
+		"It breaks in tension when $\\bar\\sigma_{max}=-\\bar F_n/A+|\\bar M|\\bar R/I\\ge\\bar\\sigma_c$, else in shear when "
+		"$|\\bar F_s|/A\\ge\\bar c+\\sigma\\tan\\bar\\phi$ ($\\sigma=\\bar F_n/A$); the contact then goes on as frictional "
+		"and the break is recorded (see :yref:`BreakingLaw`). Dashpots $c\\,v_n$ act while touching (contact) and "
+		"while bonded (bond).",
+		/*attrs*/,
 		/*ctor*/,
 		.def("elasticEnergy", &Law2_ScGeom_ParallelBondPhys_ParallelBond::elasticEnergy,
 			"Elastic energy in all contacts and bonds of this law [J].")
@@ -143,12 +135,9 @@ public:
 	);
 	// clang-format on
 	FUNCTOR2D(ScGeom, ParallelBondPhys);
-	DECLARE_LOGGER;
 
 private:
-	void recordBreak(const Interaction& I, const Vector3r& where, int mode, Real energy);
 	bool updateBond(const Interaction& I, ScGeom& geom, ParallelBondPhys& phys, const Vector3r& shearIncrement, Real relativeSpin);
-	void reportInstability(const Interaction& I);
 };
 REGISTER_SERIALIZABLE(Law2_ScGeom_ParallelBondPhys_ParallelBond);
 

@@ -45,16 +45,18 @@ def build(law_name):
         ip2, law2 = w.Ip2_FrictMat_FrictMat_FrictPhys(), w.Law2_ScGeom_FrictPhys_CundallStrack()
     O.materials.append(mat)
     for x, y, r, fixed in lattice():
-        b = utils.sphere((x, y, 0), r - 1e-9 * R if law_name == "CundallStrack" else r, material=mat, fixed=fixed)
+        # Cundall-Strack has no bonds: enlarge its discs slightly so that every neighbour pair touches.
+        b = utils.sphere((x, y, 0), 1.0005 * R if law_name == "CundallStrack" else r, material=mat, fixed=fixed)
         scene.set_disc_mass(b, 1.0)
         if not fixed:
             b.state.blockedDOFs = scene.PLANE_DOFS
         O.bodies.append(b)
     factor = 1.2 if law_name == "JCFpm" else 1.0  # JCFpm bonds what it detects at step 0
     bo1, ig2 = w.Bo1_Sphere_Aabb(aabbEnlargeFactor=factor), w.Ig2_Sphere_Sphere_ScGeom(interactionDetectionFactor=factor)
+    # Each law runs at its own stable time step (GlobalStiffnessTimeStepper), as a user would.
     O.engines = [w.ForceResetter(), w.InsertionSortCollider([bo1]), w.InteractionLoop([ig2], [ip2], [law2]),
+                 w.GlobalStiffnessTimeStepper(timestepSafetyCoefficient=0.5, timeStepUpdateInterval=100),
                  w.NewtonIntegrator(gravity=(0, -9.81, 0), damping=0.1)]
-    O.dt = 0.2 * utils.PWaveTimeStep()
     if law_name == "ParallelBond":
         bonding.bond_within_gap(gap=0.25 * R)
     O.run(1, True)
@@ -65,11 +67,13 @@ def measure(law_name):
     from yade import O
     build(law_name)
     O.run(50, True)  # warm-up
-    start = time.perf_counter()
+    start, first = time.perf_counter(), O.iter
     O.run(STEPS, True)
+    if O.iter != first + STEPS:
+        raise RuntimeError(f"{law_name}: the run stopped early (unstable?) at iteration {O.iter}")
     seconds = (time.perf_counter() - start) / STEPS
     interactions = sum(1 for i in O.interactions if i.isReal)
-    return {"law": law_name, "discs": len(O.bodies), "interactions": interactions,
+    return {"law": law_name, "discs": len(O.bodies), "interactions": interactions, "dt": O.dt,
             "us_per_step": seconds * 1e6, "ns_per_interaction_step": seconds * 1e9 / interactions}
 
 
@@ -81,10 +85,11 @@ def worker():
 
 
 def main():
-    repo = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    repo = os.environ["TOPPLING_REPO"]  # set by the ./yade launcher
     rows = []
     for threads in (1, 2):
-        proc = subprocess.run([os.path.join(repo, "yade"), "-x", "-n", "-j", str(threads), os.path.abspath(__file__), "worker"],
+        proc = subprocess.run([os.path.join(repo, "yade"), "-x", "-n", "-j", str(threads),
+                               os.path.join(repo, "scripts", "benchmark_laws.py"), "worker"],
                               capture_output=True, text=True, check=True)
         line = next(l for l in proc.stdout.splitlines() if l.startswith("BENCHMARK-JSON "))
         rows += [dict(r, threads=threads) for r in json.loads(line[len("BENCHMARK-JSON "):])]

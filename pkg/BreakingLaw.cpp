@@ -1,0 +1,36 @@
+#include "BreakingLaw.hpp"
+#include <core/Scene.hpp>
+
+namespace yade {
+
+YADE_PLUGIN((BreakingLaw));
+CREATE_LOGGER(BreakingLaw);
+
+void BreakingLaw::recordBreak(const Interaction& I, const Vector3r& where, int mode, Real energy)
+{
+#pragma omp critical(toppling_bond_breaks)
+	{
+		breakTime.push_back(scene->time);
+		breakPosition.push_back(where);
+		breakMode.push_back(mode);
+		breakEnergy.push_back(energy);
+		breakId1.push_back(I.getId1());
+		breakId2.push_back(I.getId2());
+	}
+}
+
+void BreakingLaw::reportInstability(const Interaction& I)
+{
+#pragma omp critical(toppling_instability)
+	if (!unstable) {
+		unstable          = true;
+		scene->stopAtIter = scene->iter + 1;
+		LOG_ERROR(
+		        "Bodies " << I.getId1() << " and " << I.getId2() << " moved more than a tenth of a radius relative to each other in one step, "
+		                  "or their force is not finite, at iteration " << scene->iter
+		                  << ": the run is unstable and was stopped. Lower O.dt (or use GlobalStiffnessTimeStepper with "
+		                     "timestepSafetyCoefficient < 1) or raise the damping.");
+	}
+}
+
+} // namespace yade

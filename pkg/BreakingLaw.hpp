@@ -1,0 +1,34 @@
+// What every toppling law shares: the record of broken bonds (cracks) and the stop on
+// instability. The parallel-bond and the smooth-joint laws derive from it.
+#pragma once
+
+#include <lib/base/AliasNamespaces.hpp>
+#include <core/Dispatching.hpp>
+
+namespace yade {
+
+class BreakingLaw : public LawFunctor {
+public:
+	enum Mode { tension = 2, shear = 3 };
+	void recordBreak(const Interaction& I, const Vector3r& where, int mode, Real energy);
+	void reportInstability(const Interaction& I);
+	// clang-format off
+	YADE_CLASS_BASE_DOC_ATTRS(BreakingLaw, LawFunctor,
+		"Base of the toppling laws: keeps one record per broken bond (time, position, mode, released energy, "
+		"bodies) and stops the run when it goes unstable.",
+		((vector<Real>, breakTime, , , "Simulated time of each bond break [s]."))
+		((vector<Vector3r>, breakPosition, , , "Bond centre at each break [m]."))
+		((vector<int>, breakMode, , , "Mode of each break: 2 tension, 3 shear."))
+		((vector<Real>, breakEnergy, , , "Elastic energy released by each break [J]."))
+		((vector<int>, breakId1, , , "First body of each broken bond."))
+		((vector<int>, breakId2, , , "Second body of each broken bond."))
+		((bool, unstable, false, , "Set when a pair moved more than a tenth of its smaller radius relative to each "
+			"other in one step (a time step far too large) or a force became non-finite; the run was then stopped "
+			"(``O.stopAtIter``) with a message."))
+	);
+	// clang-format on
+	DECLARE_LOGGER;
+};
+REGISTER_SERIALIZABLE(BreakingLaw);
+
+} // namespace yade
