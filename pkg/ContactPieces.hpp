@@ -42,9 +42,9 @@ namespace toppling {
 	// far too large (the run is blowing up). Non-positive radii (walls) are ignored.
 	inline bool stepIsSmall(const Vector3r& relativeVelocity, Real dt, Real r1, Real r2)
 	{
-		const Real r = (r1 > 0 && r2 > 0) ? math::min(r1, r2) : math::max(r1, r2);
-		const Real d = relativeVelocity.norm() * dt;
-		return math::isfinite(d) && (r <= 0 || d < 0.1 * r);
+		const Real r  = (r1 > 0 && r2 > 0) ? math::min(r1, r2) : math::max(r1, r2);
+		const Real d2 = relativeVelocity.squaredNorm() * dt * dt;
+		return math::isfinite(d2) && (r <= 0 || d2 < 0.01 * r * r);
 	}
 
 	// Coulomb slider: scales the shear force back onto |Fs| <= limit; true while slipping.

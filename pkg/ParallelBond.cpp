@@ -84,6 +84,7 @@ void Ip2_ParallelBondMat_ParallelBondMat_ParallelBondPhys::go(
 		LOG_ERROR(e.what() << " The run was stopped.");
 		scene->stopAtIter = scene->iter + 1;
 	}
+	if (makeJoint(*interaction)) return;
 	auto phys         = shared_ptr<ParallelBondPhys>(new ParallelBondPhys());
 	interaction->phys = phys;
 
@@ -117,6 +118,22 @@ void Ip2_ParallelBondMat_ParallelBondMat_ParallelBondPhys::go(
 	phys->updateTotalStiffness();
 }
 
+bool Ip2_ParallelBondMat_ParallelBondMat_ParallelBondPhys::makeJoint(Interaction& interaction) const
+{
+	if (!joints) return false;
+	const State&   s1     = *Body::byId(interaction.getId1(), scene)->state;
+	const State&   s2     = *Body::byId(interaction.getId2(), scene)->state;
+	const Vector3r branch = s2.pos - s1.pos;
+	const Real     spin   = toppling::meanSpin(s1, s2);
+	const int      set    = joints->setFor(interaction.getId1(), interaction.getId2(), branch, spin, *scene);
+	if (set < 0) return false;
+	const auto* mat  = dynamic_cast<const SmoothJointMat*>(scene->materials[joints->jointMaterials[set]].get());
+	const auto* geom = dynamic_cast<const GenericSpheresContact*>(interaction.geom.get());
+	if (!mat || !geom) return false;
+	interaction.phys = toppling::makeSmoothJoint(*mat, set, geom->refR1, geom->refR2, branch, spin);
+	return true;
+}
+
 /********************** Law2 **********************/
 
 bool Law2_ScGeom_ParallelBondPhys_ParallelBond::go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip, Interaction* I)
@@ -139,8 +156,8 @@ bool Law2_ScGeom_ParallelBondPhys_ParallelBond::go(shared_ptr<IGeom>& ig, shared
 	const Vector3r du = toppling::tangential(vRel * scene->dt, n);
 
 	// Contact: linear springs, no tension, Coulomb slider.
-	geom.rotate(phys.contactShearForce);
 	if (un > 0) {
+		geom.rotate(phys.contactShearForce);
 		phys.contactNormalForce = phys.contactKn * un;
 		phys.contactShearForce -= phys.contactKs * du;
 		phys.isSlipping = toppling::coulombSlip(phys.contactShearForce, phys.contactNormalForce * phys.tangensOfFrictionAngle);
@@ -150,13 +167,14 @@ bool Law2_ScGeom_ParallelBondPhys_ParallelBond::go(shared_ptr<IGeom>& ig, shared
 		phys.isSlipping         = false;
 	}
 
-	const Real spin = (b2.state->angVel - b1.state->angVel).z() * scene->dt;
-	if (phys.isBonded() && !updateBond(*I, geom, phys, du, spin) && un < 0) return false;
+	if (phys.isBonded()) {
+		const Real spin = (b2.state->angVel.z() - b1.state->angVel.z()) * scene->dt;
+		if (!updateBond(*I, geom, phys, du, spin) && un < 0) return false;
+	}
 
 	// Dashpots on the normal relative velocity (positive when separating).
-	const Real vn        = vRel.dot(n);
 	const Real c         = (un > 0 ? phys.contactDamping : 0) + (phys.isBonded() ? phys.bondDamping : 0);
-	const Real dampingFn = -c * vn;
+	const Real dampingFn = c > 0 ? -c * vRel.dot(n) : 0;
 
 	phys.normalForce = (phys.contactNormalForce + phys.bondNormalForce + dampingFn) * n;
 	phys.shearForce  = phys.contactShearForce + phys.bondShearForce;

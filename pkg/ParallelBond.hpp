@@ -8,6 +8,7 @@
 #include <pkg/dem/FrictPhys.hpp>
 #include <pkg/dem/ScGeom.hpp>
 #include "BreakingLaw.hpp"
+#include "SmoothJoint.hpp"
 #include <limits>
 
 namespace yade {
@@ -100,9 +101,17 @@ public:
 	void go(const shared_ptr<Material>& m1, const shared_ptr<Material>& m2, const shared_ptr<Interaction>& interaction) override;
 	FUNCTOR2D(ParallelBondMat, ParallelBondMat);
 	DECLARE_LOGGER;
+
+private:
+	bool makeJoint(Interaction& interaction) const;
 	// clang-format off
-	YADE_CLASS_BASE_DOC(Ip2_ParallelBondMat_ParallelBondMat_ParallelBondPhys, IPhysFunctor,
-		"Creates :yref:`ParallelBondPhys` (unbonded) from two :yref:`ParallelBondMat`; see the material for the formulas.");
+	YADE_CLASS_BASE_DOC_ATTRS(Ip2_ParallelBondMat_ParallelBondMat_ParallelBondPhys, IPhysFunctor,
+		"Creates :yref:`ParallelBondPhys` (unbonded) from two :yref:`ParallelBondMat`; see the material for the formulas. "
+		"Where :yref:`joints<Ip2_ParallelBondMat_ParallelBondMat_ParallelBondPhys.joints>` says the two discs straddle "
+		"a joint, it creates that joint set's :yref:`SmoothJointPhys` instead: the one place that decides between "
+		"rock and joint.",
+		((shared_ptr<JointSystem>, joints, , , "The scene's joints (``toppling.joints`` sets it); none: all rock."))
+	);
 	// clang-format on
 };
 REGISTER_SERIALIZABLE(Ip2_ParallelBondMat_ParallelBondMat_ParallelBondPhys);

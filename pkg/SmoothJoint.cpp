@@ -1,0 +1,170 @@
+#include "SmoothJoint.hpp"
+#include "ContactPieces.hpp"
+#include "Validation.hpp"
+#include <core/Scene.hpp>
+
+namespace yade {
+
+YADE_PLUGIN((SmoothJointMat)(JointSystem)(SmoothJointPhys)(Law2_ScGeom_SmoothJointPhys_SmoothJoint));
+
+using toppling::Range;
+
+void SmoothJointMat::validate() const
+{
+	if (math::abs(normal.norm() - 1) > 1e-6 || normal.z() != 0)
+		throw std::invalid_argument("SmoothJointMat.normal must be a unit vector in the xy-plane.");
+	toppling::require("SmoothJointMat", "normalStiffness", normalStiffness, Range::positive());
+	toppling::require("SmoothJointMat", "shearStiffness", shearStiffness, Range::positive());
+	toppling::require("SmoothJointMat", "frictionAngle", frictionAngle, Range::angle());
+	toppling::require("SmoothJointMat", "dilationAngle", dilationAngle, Range::angle());
+	toppling::require("SmoothJointMat", "gap", gap, Range::nonNegative());
+	toppling::require("SmoothJointMat", "radiusMultiplier", radiusMultiplier, Range::positive());
+	toppling::require("SmoothJointMat", "thickness", thickness, Range::positive());
+	toppling::require("SmoothJointMat", "tensileStrength", tensileStrength, Range::nonNegative());
+	toppling::require("SmoothJointMat", "cohesion", cohesion, Range::nonNegative());
+}
+
+/********************** JointSystem **********************/
+
+void JointSystem::addPair(Body::id_t id1, Body::id_t id2, int set)
+{
+	pairId1.push_back(id1);
+	pairId2.push_back(id2);
+	pairSet.push_back(set);
+	index.clear();
+}
+
+int JointSystem::setFor(Body::id_t id1, Body::id_t id2, const Vector3r& branch, Real meanRotation, const Scene& sc) const
+{
+	if (index.empty() && !pairSet.empty()) {
+		for (size_t i = 0; i < pairSet.size(); ++i)
+			index[key(pairId1[i], pairId2[i])] = pairSet[i];
+	}
+	if (const auto it = index.find(key(id1, id2)); it != index.end()) return it->second;
+	const auto block = [&](Body::id_t id) { return size_t(id) < blockOfBody.size() ? blockOfBody[id] : -1; };
+	if (block(id1) < 0 || block(id2) < 0 || block(id1) == block(id2)) return -1;
+	// Two blocks that were not in contact when the joints were installed: the set whose
+	// (rotated) joint plane is most nearly perpendicular to the centre line.
+	int  best = -1;
+	Real bestAlignment = -1;
+	for (size_t s = 0; s < jointMaterials.size(); ++s) {
+		const auto* mat = dynamic_cast<const SmoothJointMat*>(sc.materials[jointMaterials[s]].get());
+		if (!mat) continue;
+		const Real alignment = math::abs(toppling::rotatedZ(mat->normal, meanRotation).dot(branch.normalized()));
+		if (alignment > bestAlignment) {
+			bestAlignment = alignment;
+			best          = int(s);
+		}
+	}
+	return best;
+}
+
+/********************** geometry helpers **********************/
+
+namespace toppling {
+	Real spinAngle(const Quaternionr& q) { return 2 * math::atan2(q.z(), q.w()); }
+
+	Real meanSpin(const State& s1, const State& s2)
+	{
+		const Real a = spinAngle(s1.ori), b = spinAngle(s2.ori);
+		return a + 0.5 * math::atan2(math::sin(b - a), math::cos(b - a)); // halfway along the shorter arc
+	}
+
+	Vector3r rotatedZ(const Vector3r& v, Real angle)
+	{
+		const Real c = math::cos(angle), s = math::sin(angle);
+		return Vector3r(c * v.x() - s * v.y(), s * v.x() + c * v.y(), 0);
+	}
+
+	shared_ptr<SmoothJointPhys> makeSmoothJoint(const SmoothJointMat& mat, int set, Real r1, Real r2, const Vector3r& branch, Real meanRotation)
+	{
+		auto phys      = shared_ptr<SmoothJointPhys>(new SmoothJointPhys());
+		phys->jointSet = set;
+		// Orient the normal from body 1's side of the joint to body 2's.
+		const Vector3r n         = rotatedZ(mat.normal, meanRotation);
+		const Real     sign      = n.dot(branch) >= 0 ? 1 : -1;
+		phys->jointNormal0       = sign * mat.normal;
+		phys->jointNormal        = sign * n;
+		const Real rMin          = (r1 > 0 && r2 > 0) ? math::min(r1, r2) : math::max(r1, r2);
+		phys->area               = 2 * mat.radiusMultiplier * rMin * mat.thickness;
+		phys->normalStiffness    = mat.normalStiffness;
+		phys->shearStiffness     = mat.shearStiffness;
+		phys->kn                 = mat.normalStiffness * phys->area;
+		phys->ks                 = mat.shearStiffness * phys->area;
+		phys->tangensOfFrictionAngle = math::tan(mat.frictionAngle);
+		phys->tanDilation        = math::tan(mat.dilationAngle);
+		phys->overlap            = -mat.gap;
+		phys->bondState          = mat.bonded ? 1 : 0;
+		phys->tensileStrength    = mat.tensileStrength;
+		phys->cohesion           = mat.cohesion;
+		return phys;
+	}
+} // namespace toppling
+
+Real SmoothJointPhys::elasticEnergy() const
+{
+	return toppling::springEnergy(jointNormalForce, kn) + toppling::springEnergy(jointShearForce, ks);
+}
+
+/********************** Law2 **********************/
+
+bool Law2_ScGeom_SmoothJointPhys_SmoothJoint::go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip, Interaction* I)
+{
+	auto&       geom = *static_cast<ScGeom*>(ig.get());
+	auto&       phys = *static_cast<SmoothJointPhys*>(ip.get());
+	const Body& b1   = *Body::byId(I->getId1(), scene);
+	const Body& b2   = *Body::byId(I->getId2(), scene);
+
+	const Vector3r vRel = toppling::relativeVelocity(*b1.state, *b2.state, geom.contactPoint);
+	if (!toppling::stepIsSmall(vRel, scene->dt, geom.refR1, geom.refR2)) {
+		reportInstability(*I);
+		return true;
+	}
+	// The joint turns with the blocks: its normal follows the discs' mean rotation.
+	const Vector3r n  = toppling::rotatedZ(phys.jointNormal0, toppling::meanSpin(*b1.state, *b2.state));
+	const Vector3r t  = Vector3r::UnitZ().cross(n);
+	const Vector3r du = vRel * scene->dt;
+	phys.jointNormal  = n;
+	phys.overlap -= du.dot(n);
+
+	const Real knA = phys.kn, ksA = phys.ks, A = phys.area;
+	Real       fn = knA * phys.overlap;
+	Real       fs = phys.jointShearForce - ksA * du.dot(t);
+	if (phys.isBonded()) {
+		int mode = 0;
+		if (-fn / A >= phys.tensileStrength) mode = BreakingLaw::tension;
+		else if (math::abs(fs) / A >= phys.cohesion + phys.tangensOfFrictionAngle * fn / A)
+			mode = BreakingLaw::shear;
+		if (mode) {
+			phys.jointNormalForce = fn;
+			phys.jointShearForce  = fs;
+			recordBreak(*I, geom.contactPoint, mode, phys.elasticEnergy());
+			phys.bondState = mode;
+		}
+	}
+	phys.isSlipping = false;
+	if (!phys.isBonded()) {
+		if (phys.overlap <= 0) { // open joint
+			phys.jointNormalForce = phys.jointShearForce = 0;
+			phys.normalForce = phys.shearForce = Vector3r::Zero();
+			return geom.penetrationDepth >= 0;
+		}
+		const Real limit = phys.tangensOfFrictionAngle * fn;
+		if (math::abs(fs) > limit) {
+			const Real plasticSlip = (math::abs(fs) - limit) / ksA;
+			phys.slip += plasticSlip;
+			phys.overlap += plasticSlip * phys.tanDilation; // dilation against the confinement
+			fn              = knA * phys.overlap;
+			fs              = (fs < 0 ? -1 : 1) * phys.tangensOfFrictionAngle * fn;
+			phys.isSlipping = true;
+		}
+	}
+	phys.jointNormalForce = fn;
+	phys.jointShearForce  = fs;
+	phys.normalForce      = fn * n;
+	phys.shearForce       = fs * t;
+	applyForceAtContactPoint(-phys.normalForce - phys.shearForce, geom.contactPoint, I->getId1(), b1.state->pos, I->getId2(), b2.state->pos);
+	return true;
+}
+
+} // namespace yade

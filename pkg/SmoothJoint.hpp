@@ -1,0 +1,145 @@
+// Smooth-joint model for discs (Pierce 2007, Mas Ivars 2011; PFC2D form): the contact of two
+// discs on opposite sides of a joint acts along the joint plane, not along their centre line,
+// so blocks slide past each other without particle interlocking.
+#pragma once
+
+#include "BreakingLaw.hpp"
+#include <lib/base/AliasNamespaces.hpp>
+#include <core/Material.hpp>
+#include <pkg/dem/FrictPhys.hpp>
+#include <pkg/dem/ScGeom.hpp>
+#include <unordered_map>
+
+namespace yade {
+
+// One joint set's mechanics and orientation; lives in O.materials, referenced by JointSystem.
+class SmoothJointMat : public Material {
+public:
+	void validate() const;
+	void postLoad(SmoothJointMat&) { validate(); }
+	// clang-format off
+	YADE_CLASS_BASE_DOC_ATTRS_CTOR(SmoothJointMat, Material,
+		"Mechanical parameters of one joint set (smooth joint, PFC2D form) and its orientation. Not assigned to "
+		"bodies: :yref:`JointSystem` maps pairs of discs to it. Stiffnesses are per unit area (the thesis' "
+		"N/m³); the joint area of a pair is $A=2\\bar\\lambda\\min(R_1,R_2)t$.",
+		((Vector3r, normal, Vector3r(0, 1, 0), Attr::triggerPostLoad, "Unit normal of the joint plane (xy-plane vector) for discs that have not rotated."))
+		((Real, normalStiffness, 1e9, Attr::triggerPostLoad, "Joint normal stiffness $k_n^j$ [N/m³] (> 0)."))
+		((Real, shearStiffness, 1e9, Attr::triggerPostLoad, "Joint shear stiffness $k_s^j$ [N/m³] (> 0)."))
+		((Real, frictionAngle, 0.5, Attr::triggerPostLoad, "Joint friction angle $\\phi_j$ [rad], in [0, π/2)."))
+		((Real, dilationAngle, 0, Attr::triggerPostLoad, "Dilation angle $\\psi$ while slipping [rad], in [0, π/2)."))
+		((Real, gap, 0, Attr::triggerPostLoad, "Joint aperture $g_j$ [m] (>= 0): normal closure, measured from the configuration when the joint "
+			"contact was made, before the joint carries compression. 0: faces touching but stress-free."))
+		((Real, radiusMultiplier, 1, Attr::triggerPostLoad, "$\\bar\\lambda$ of the joint area [-] (> 0)."))
+		((Real, thickness, 1, Attr::triggerPostLoad, "Disc thickness $t$ [m] (> 0)."))
+		((bool, bonded, false, , "Joint contacts start bonded (tensile strength and cohesion), then behave as unbonded once broken."))
+		((Real, tensileStrength, 0, Attr::triggerPostLoad, "Bonded joint tensile strength [Pa] (>= 0)."))
+		((Real, cohesion, 0, Attr::triggerPostLoad, "Bonded joint cohesion [Pa] (>= 0)."))
+		,
+		createIndex();
+	);
+	// clang-format on
+	REGISTER_CLASS_INDEX(SmoothJointMat, Material);
+};
+REGISTER_SERIALIZABLE(SmoothJointMat);
+
+// Which disc pairs are joint contacts, and with which joint set.
+class JointSystem : public Serializable {
+public:
+	// Joint set (index into jointMaterials) for a pair, or -1 for rock. `branch` is x2 - x1.
+	int  setFor(Body::id_t id1, Body::id_t id2, const Vector3r& branch, Real meanRotation, const Scene& scene) const;
+	void addPair(Body::id_t id1, Body::id_t id2, int set);
+	void postLoad(JointSystem&) { index.clear(); }
+	// clang-format off
+	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(JointSystem, Serializable,
+		"The joints of a scene: pairs of discs that straddle a joint segment (found when joints are installed, "
+		"``toppling.joints``), and the block of every disc. A pair listed here gets its set's smooth joint; a new "
+		"contact between discs of two different blocks (blocks that slid or rotated into each other) gets the "
+		"smooth joint of the set whose current normal is closest to the pair's centre line.",
+		((vector<int>, jointMaterials, , , "Material id (in ``O.materials``) of the :yref:`SmoothJointMat` of each joint set."))
+		((vector<int>, pairId1, , , "First disc of each joint pair."))
+		((vector<int>, pairId2, , , "Second disc of each joint pair."))
+		((vector<int>, pairSet, , , "Joint set of each joint pair."))
+		((vector<int>, blockOfBody, , , "Block of each body (index = body id); -1 or missing: no block."))
+		,
+		/*ctor*/,
+		.def("addPair", &JointSystem::addPair, (boost::python::arg("id1"), boost::python::arg("id2"), boost::python::arg("set")),
+			"Make the pair a joint contact of joint set ``set``.")
+	);
+	// clang-format on
+
+private:
+	mutable std::unordered_map<uint64_t, int> index; // pair key -> set, rebuilt lazily
+	static uint64_t key(Body::id_t a, Body::id_t b)
+	{
+		if (a > b) std::swap(a, b);
+		return (uint64_t(uint32_t(a)) << 32) | uint32_t(b);
+	}
+};
+REGISTER_SERIALIZABLE(JointSystem);
+
+class SmoothJointPhys : public FrictPhys {
+public:
+	bool  isBonded() const { return bondState == 1; }
+	Real  elasticEnergy() const;
+	// clang-format off
+	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(SmoothJointPhys, FrictPhys,
+		"Physics of a smooth-joint contact. ``kn``/``ks`` hold $k^jA$ [N/m] (for the time step), "
+		"``normalForce``/``shearForce`` the force on body 2 along the joint normal and plane.",
+		((int, jointSet, -1, , "Joint set index (in :yref:`JointSystem.jointMaterials`)."))
+		((Vector3r, jointNormal0, Vector3r(0, 1, 0), , "Joint normal for unrotated discs, pointing from body 1's side to body 2's [-]."))
+		((Vector3r, jointNormal, Vector3r(0, 1, 0), , "Current joint normal: ``jointNormal0`` rotated by the mean rotation of the two discs."))
+		((Real, area, 0, , "Joint area $A$ [m²]."))
+		((Real, normalStiffness, 0, , "$k_n^j$ [N/m³]."))
+		((Real, shearStiffness, 0, , "$k_s^j$ [N/m³]."))
+		((Real, tanDilation, 0, , "$\\tan\\psi$ [-]."))
+		((Real, overlap, 0, , "Normal closure along the joint normal [m]; starts at $-g_j$."))
+		((Real, jointNormalForce, 0, , "Normal force [N], compression positive."))
+		((Real, jointShearForce, 0, , "Shear force along the joint tangent $\\hat z\\times\\hat n$ on body 2 [N]."))
+		((Real, slip, 0, , "Accumulated plastic slip [m]."))
+		((bool, isSlipping, false, , "Coulomb limit reached this step."))
+		((int, bondState, 0, , "0 unbonded, 1 bonded, 2 broken in tension, 3 broken in shear."))
+		((Real, tensileStrength, 0, , "Bonded tensile strength [Pa]."))
+		((Real, cohesion, 0, , "Bonded cohesion [Pa]."))
+		,
+		createIndex();
+		,
+		.def("elasticEnergy", &SmoothJointPhys::elasticEnergy, "Elastic energy stored in the joint springs [J].")
+	);
+	// clang-format on
+	REGISTER_CLASS_INDEX(SmoothJointPhys, FrictPhys);
+};
+REGISTER_SERIALIZABLE(SmoothJointPhys);
+
+class Law2_ScGeom_SmoothJointPhys_SmoothJoint : public BreakingLaw {
+public:
+	bool go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip, Interaction* I) override;
+	// clang-format off
+	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(Law2_ScGeom_SmoothJointPhys_SmoothJoint, BreakingLaw,
+		"Smooth-joint law (Pierce 2007, Mas Ivars 2011; PFC2D). The relative displacement of the contact point is "
+		"split along the joint normal $\\hat n$ (which turns with the mean rotation of the two discs, so it follows "
+		"rotating blocks) and the joint plane: $\\Delta F_n = k_n^jA\\Delta u_n$, $\\Delta F_s=-k_s^jA\\Delta u_s$. "
+		"Unbonded: no tension ($F_n=F_s=0$ while open), Coulomb slip $|F_s|\\le\\tan\\phi_j F_n$, and slipping by "
+		"$\\Delta u_s^p$ closes the joint by $\\Delta u_s^p\\tan\\psi$ (dilation against the confinement). Bonded: "
+		"breaks in tension at $-F_n/A\\ge\\sigma_t$, else in shear at $|F_s|/A\\ge c+\\tan\\phi_j F_n/A$ (recorded as a "
+		"bond break) and goes on unbonded. No moment. The contact is removed when open and the discs apart.",
+		/*attrs*/,
+		/*ctor*/,
+		/*py*/
+	);
+	// clang-format on
+	FUNCTOR2D(ScGeom, SmoothJointPhys);
+};
+REGISTER_SERIALIZABLE(Law2_ScGeom_SmoothJointPhys_SmoothJoint);
+
+namespace toppling {
+	// Rotation angle about z of a disc's orientation [rad].
+	Real spinAngle(const Quaternionr& q);
+	// Mean rotation angle about z of two discs [rad].
+	Real meanSpin(const State& s1, const State& s2);
+	// v rotated by angle about z.
+	Vector3r rotatedZ(const Vector3r& v, Real angle);
+	// Smooth-joint physics for a pair of discs of radii r1, r2, with joint set `set` of material `mat`.
+	shared_ptr<SmoothJointPhys> makeSmoothJoint(const SmoothJointMat& mat, int set, Real r1, Real r2, const Vector3r& branch, Real meanRotation);
+} // namespace toppling
+
+} // namespace yade
