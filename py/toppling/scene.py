@@ -10,7 +10,8 @@ from yade.wrapper import (Bo1_Box_Aabb, Bo1_Sphere_Aabb, Bo1_Wall_Aabb, ForceRes
                           Ig2_Sphere_Sphere_ScGeom, Ig2_Wall_Sphere_ScGeom,
                           InsertionSortCollider, InteractionLoop,
                           Ip2_ParallelBondMat_ParallelBondMat_ParallelBondPhys,
-                          Law2_ScGeom_ParallelBondPhys_ParallelBond, NewtonIntegrator)
+                          Law2_ScGeom_ParallelBondPhys_ParallelBond,
+                          Law2_ScGeom_SmoothJointPhys_SmoothJoint, NewtonIntegrator)
 
 PLANE_DOFS = 'zXY'  # discs move in the xy-plane and spin about z only
 
@@ -46,7 +47,7 @@ def add_discs(discs: Iterable[tuple[float, float, float]], material) -> list[int
 
 def engines(gravity=(0.0, -9.81, 0.0), local_damping: float = 0.0,
             timestepper: bool = True, safety: float = 0.5, extra: Sequence = ()) -> list:
-    """The engine list of a bonded-disc scene: collider, parallel-bond law, Newton.
+    """The engine list of a bonded-disc scene: collider, parallel-bond and smooth-joint laws, Newton.
 
     ``local_damping`` is NewtonIntegrator's non-viscous damping (PFC's local damping);
     ``timestepper`` adds GlobalStiffnessTimeStepper, which sees bond stiffness.
@@ -61,7 +62,7 @@ def engines(gravity=(0.0, -9.81, 0.0), local_damping: float = 0.0,
         InteractionLoop(
             [Ig2_Sphere_Sphere_ScGeom(), Ig2_Wall_Sphere_ScGeom(), Ig2_Box_Sphere_ScGeom()],
             [Ip2_ParallelBondMat_ParallelBondMat_ParallelBondPhys()],
-            [Law2_ScGeom_ParallelBondPhys_ParallelBond()]),
+            [Law2_ScGeom_ParallelBondPhys_ParallelBond(), Law2_ScGeom_SmoothJointPhys_SmoothJoint()]),
     ]
     if timestepper:
         loop.append(GlobalStiffnessTimeStepper(timestepSafetyCoefficient=safety,

@@ -1,0 +1,52 @@
+"""Install pre-existing joints: bonded pairs that straddle a joint become smooth joints."""
+from __future__ import annotations
+
+from typing import Sequence
+
+from yade import O, utils
+from yade.wrapper import (InteractionLoop, Ip2_ParallelBondMat_ParallelBondMat_ParallelBondPhys,
+                          JointSetGeometry, JointSystem, SmoothJointMat)
+
+from toppling.scene import limit_timestep
+
+
+def rock_functor() -> Ip2_ParallelBondMat_ParallelBondMat_ParallelBondPhys:
+    """The Ip2 that decides between rock (parallel bond) and joint (smooth joint)."""
+    for engine in O.engines:
+        if isinstance(engine, InteractionLoop):
+            for functor in engine.physDispatcher.functors:
+                if isinstance(functor, Ip2_ParallelBondMat_ParallelBondMat_ParallelBondPhys):
+                    return functor
+    raise LookupError("no Ip2_ParallelBondMat_ParallelBondMat_ParallelBondPhys in O.engines; build them with toppling.scene.engines()")
+
+
+def is_persistent(geometry: JointSetGeometry) -> bool:
+    """A set whose joints run through the whole section (no rock bridges, not explicit)."""
+    return not geometry.segmentStarts and geometry.bridgeLength == 0
+
+
+def install_joints(sets: Sequence[tuple[JointSetGeometry, SmoothJointMat]], lo, hi) -> JointSystem:
+    """Install joint sets (geometry, mechanics) in the current scene, within the box lo..hi.
+
+    Every interaction whose centre-to-centre segment crosses a joint loses its bond and gets
+    the smooth joint of that set (thesis §3.2.4); discs are given the block (band of every
+    persistent set) they lie in, so contacts that form later between blocks are smooth joints
+    too. Returns the scene's JointSystem.
+    """
+    ip2 = rock_functor()
+    system = ip2.joints if ip2.joints is not None else JointSystem()
+    materials = list(system.jointMaterials)
+    pairs = []
+    for geometry, mechanics in sets:
+        materials.append(O.materials.append(mechanics))
+        for i, j in system.crossingPairs(geometry, lo, hi):
+            system.addPair(i, j, len(materials) - 1)
+            pairs.append((i, j))
+    system.jointMaterials = materials
+    system.assignBlocks([g for g, _ in sets if is_persistent(g)])
+    ip2.joints = system
+    for i, j in pairs:  # the Ip2 now makes them smooth joints
+        O.interactions.erase(i, j)
+        utils.createInteraction(i, j)
+    limit_timestep()
+    return system

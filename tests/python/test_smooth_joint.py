@@ -1,0 +1,94 @@
+"""A bonded block on a fixed slab across a smooth joint: sliding against closed forms."""
+import math
+
+import pytest
+from lattice import R, material
+from yade import O
+from yade.wrapper import JointSetGeometry, SmoothJointMat
+
+from toppling import bonding, joints, scene
+
+G = 9.81
+ROWS_SLAB, ROWS_BLOCK, COLS = 3, 5, 24
+Y_JOINT = math.sqrt(3) * R * (ROWS_SLAB - 0.5)  # between the slab's top row and the block's bottom row
+
+
+def block_on_slab(friction_deg: float, smooth: bool = True):
+    """Fixed slab of discs, bonded block of discs on it, a horizontal joint between: a smooth
+    joint, or (smooth=False) plain disc contacts of the same friction."""
+    rock = material(frictionAngle=math.radians(30 if smooth else friction_deg))
+    block = []
+    for j in range(ROWS_SLAB + ROWS_BLOCK):
+        for i in range(COLS):
+            if j >= ROWS_SLAB and not 4 <= i < 12:
+                continue
+            x, y = 2 * R * i + (R if j % 2 else 0), math.sqrt(3) * R * j
+            b = O.bodies.append(scene.disc((x, y), R, rock, fixed=j < ROWS_SLAB))
+            if j >= ROWS_SLAB:
+                block.append(b)
+    O.engines = scene.engines(gravity=(0, -G, 0), local_damping=0.5)
+    if not smooth:
+        bonding.bond_within_gap(1e-6 * R, ids=block)
+        O.run(2000, True)
+        return block, None
+    bonding.bond_within_gap(1e-6 * R)
+    joint = JointSetGeometry(origin=(0, Y_JOINT), dip=0)
+    mechanics = SmoothJointMat(normal=(0, 1, 0), normalStiffness=rock.bondYoung / (2 * R),
+                               shearStiffness=rock.bondYoung / (2 * R), frictionAngle=math.radians(friction_deg))
+    system = joints.install_joints([(joint, mechanics)], lo=(-R, -R), hi=(2 * R * COLS, 10 * R * ROWS_BLOCK))
+    O.run(2000, True)  # settle on the joint, damped
+    return block, system
+
+
+def tilt(alpha_deg: float) -> None:
+    """Tilt the table by rotating gravity; no damping from here on."""
+    a = math.radians(alpha_deg)
+    O.engines[-1].gravity = (G * math.sin(a), -G * math.cos(a), 0)
+    O.engines[-1].damping = 0.0
+
+
+def mean_x_velocity(ids) -> float:
+    return sum(O.bodies[i].state.vel[0] for i in ids) / len(ids)
+
+
+def acceleration(ids, steps=4000) -> float:
+    v0, t0 = mean_x_velocity(ids), O.time
+    O.run(steps, True)
+    return (mean_x_velocity(ids) - v0) / (O.time - t0)
+
+
+def test_joint_pairs_lose_their_bonds(empty_scene):
+    block, system = block_on_slab(friction_deg=20)
+    assert len(system.pairId1) == 2 * 8  # each of the block's 8 bottom discs touches two slab discs
+    for i, j in zip(system.pairId1, system.pairId2):
+        phys = O.interactions[i, j].phys
+        assert type(phys).__name__ == "SmoothJointPhys"
+        assert phys.jointNormal[1] == pytest.approx(1.0)
+
+
+def test_without_smooth_joint_coarse_discs_interlock(empty_scene):
+    # Thesis §4.4: the block's bottom discs sit in the grooves between the slab's discs, so even a
+    # frictionless interface holds it at 26°; the smooth joint removes the bumps (next test).
+    block, _ = block_on_slab(friction_deg=0, smooth=False)
+    tilt(26)
+    assert abs(acceleration(block)) < 0.01 * G * math.sin(math.radians(26))
+
+
+def test_frictionless_joint_slides_at_g_sin_alpha(empty_scene):
+    block, _ = block_on_slab(friction_deg=0)
+    tilt(26)
+    assert acceleration(block) == pytest.approx(G * math.sin(math.radians(26)), rel=0.02)
+
+
+@pytest.mark.parametrize("phi", [20.0, 30.0])
+def test_friction_holds_below_and_slides_above_friction_angle(empty_scene, phi):
+    block, _ = block_on_slab(friction_deg=phi)
+    start = [O.bodies[i].state.pos[0] for i in block]
+    tilt(phi - 2)
+    O.run(4000, True)
+    creep = max(abs(O.bodies[i].state.pos[0] - x) for i, x in zip(block, start))
+    assert creep < 0.01 * R  # elastic shear only
+    tilt(phi + 4)
+    a = math.radians(phi + 4)
+    expected = G * (math.sin(a) - math.tan(math.radians(phi)) * math.cos(a))
+    assert acceleration(block) == pytest.approx(expected, rel=0.05)
