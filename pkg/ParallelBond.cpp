@@ -182,11 +182,15 @@ bool Law2_ScGeom_ParallelBondPhys_ParallelBond::go(shared_ptr<IGeom>& ig, shared
 		reportInstability(*I);
 		return true;
 	}
-	applyForceAtContactPoint(-phys.normalForce - phys.shearForce, geom.contactPoint, I->getId1(), b1.state->pos, I->getId2(), b2.state->pos);
-	if (phys.bondMoment != 0) {
-		scene->forces.addTorque(I->getId1(), Vector3r(0, 0, -phys.bondMoment));
-		scene->forces.addTorque(I->getId2(), Vector3r(0, 0, phys.bondMoment));
-	}
+	toppling::applyContact(
+	        scene->forces,
+	        I->getId1(),
+	        b1.state->pos,
+	        I->getId2(),
+	        b2.state->pos,
+	        geom.contactPoint,
+	        -phys.normalForce - phys.shearForce,
+	        Vector3r(0, 0, phys.bondMoment));
 	return true;
 }
 

@@ -234,7 +234,8 @@ bool Law2_ScGeom_SmoothJointPhys_SmoothJoint::go(shared_ptr<IGeom>& ig, shared_p
 	phys.jointShearForce  = fs;
 	phys.normalForce      = fn * n;
 	phys.shearForce       = fs * t;
-	applyForceAtContactPoint(-phys.normalForce - phys.shearForce, geom.contactPoint, I->getId1(), b1.state->pos, I->getId2(), b2.state->pos);
+	toppling::applyContact(
+	        scene->forces, I->getId1(), b1.state->pos, I->getId2(), b2.state->pos, geom.contactPoint, -phys.normalForce - phys.shearForce, Vector3r::Zero());
 	return true;
 }
 
