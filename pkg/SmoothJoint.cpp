@@ -7,7 +7,7 @@
 
 namespace yade {
 
-YADE_PLUGIN((SmoothJointMat)(JointSetGeometry)(JointSystem)(SmoothJointPhys)(Law2_ScGeom_SmoothJointPhys_SmoothJoint));
+YADE_PLUGIN((SmoothJointMat)(JointSystem)(SmoothJointPhys)(Law2_ScGeom_SmoothJointPhys_SmoothJoint));
 
 using toppling::Range;
 
@@ -26,49 +26,11 @@ void SmoothJointMat::validate() const
 	toppling::require("SmoothJointMat", "cohesion", cohesion, Range::nonNegative());
 }
 
-/********************** JointSetGeometry **********************/
-
-::toppling::geometry::JointSet JointSetGeometry::toGeometry() const
-{
-	::toppling::geometry::JointSet g;
-	g.origin       = { double(origin.x()), double(origin.y()) };
-	g.dipDeg       = double(dip);
-	g.spacing      = double(spacing);
-	g.jointLength  = double(jointLength);
-	g.bridgeLength = double(bridgeLength);
-	g.phase        = double(phase);
-	if (segmentStarts.size() != segmentEnds.size())
-		throw std::invalid_argument("JointSetGeometry: segmentStarts and segmentEnds must have the same length.");
-	for (size_t i = 0; i < segmentStarts.size(); ++i)
-		g.explicitSegments.push_back({ { double(segmentStarts[i].x()), double(segmentStarts[i].y()) },
-		                               { double(segmentEnds[i].x()), double(segmentEnds[i].y()) } });
-	return g;
-}
-
-namespace {
-	::toppling::geometry::Box box(const Vector2r& lo, const Vector2r& hi)
-	{
-		::toppling::geometry::Box b;
-		b.extend({ double(lo.x()), double(lo.y()) });
-		b.extend({ double(hi.x()), double(hi.y()) });
-		return b;
-	}
-	::toppling::geometry::Vec2 xy(const Vector3r& p) { return { double(p.x()), double(p.y()) }; }
-} // namespace
-
-boost::python::list JointSetGeometry::segmentsPy(const Vector2r& lo, const Vector2r& hi) const
-{
-	boost::python::list out;
-	for (const auto& s : toGeometry().segments(box(lo, hi)))
-		out.append(boost::python::make_tuple(Vector2r(s.a.x, s.a.y), Vector2r(s.b.x, s.b.y)));
-	return out;
-}
-
 /********************** JointSystem **********************/
 
 boost::python::list JointSystem::crossingPairs(const JointSetGeometry& set, const Vector2r& lo, const Vector2r& hi) const
 {
-	const auto          joints = set.toGeometry().segments(box(lo, hi));
+	const auto          joints = set.toGeometry().segments(toppling::box(lo, hi));
 	const Scene&        sc     = *Omega::instance().getScene();
 	boost::python::list out;
 	for (const auto& I : *sc.interactions) {
@@ -76,7 +38,7 @@ boost::python::list JointSystem::crossingPairs(const JointSetGeometry& set, cons
 		const Vector3r& p = (*sc.bodies)[I->getId1()]->state->pos;
 		const Vector3r& q = (*sc.bodies)[I->getId2()]->state->pos;
 		for (const auto& j : joints)
-			if (::toppling::geometry::intersects({ xy(p), xy(q) }, j)) {
+			if (::toppling::geometry::intersects({ toppling::xy(p), toppling::xy(q) }, j)) {
 				out.append(boost::python::make_tuple(I->getId1(), I->getId2()));
 				break;
 			}
@@ -93,7 +55,7 @@ void JointSystem::assignBlocks(const boost::python::list& persistentSets)
 	const Scene&                   sc = *Omega::instance().getScene();
 	blockOfBody.assign(sc.bodies->size(), -1);
 	for (const auto& b : *sc.bodies)
-		if (b && dynamic_cast<const Sphere*>(b->shape.get())) blockOfBody[b->id] = blocks.blockId(xy(b->state->pos));
+		if (b && dynamic_cast<const Sphere*>(b->shape.get())) blockOfBody[b->id] = blocks.blockId(toppling::xy(b->state->pos));
 }
 
 

@@ -8,7 +8,7 @@
 #include <core/Material.hpp>
 #include <pkg/dem/FrictPhys.hpp>
 #include <pkg/dem/ScGeom.hpp>
-#include "geometry/JointSet.hpp"
+#include "SlopeGeometry.hpp"
 #include <unordered_map>
 
 namespace yade {
@@ -42,36 +42,6 @@ public:
 	REGISTER_CLASS_INDEX(SmoothJointMat, Material);
 };
 REGISTER_SERIALIZABLE(SmoothJointMat);
-
-// Geometry of one joint set (exposed to Python): parallel joints at a spacing, with rock
-// bridges, or explicit segments. Wraps ::toppling::geometry::JointSet.
-class JointSetGeometry : public Serializable {
-public:
-	::toppling::geometry::JointSet toGeometry() const;
-	boost::python::list          segmentsPy(const Vector2r& lo, const Vector2r& hi) const;
-	long                         band(const Vector2r& p) const { return toGeometry().band({ p.x(), p.y() }); }
-	void                         postLoad(JointSetGeometry&) { toGeometry().validate(); }
-	// clang-format off
-	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(JointSetGeometry, Serializable,
-		"Where the joints of one set are, in the xy cross-section.",
-		((Vector2r, origin, Vector2r::Zero(), Attr::triggerPostLoad, "A point on one joint of the set [m]."))
-		((Real, dip, 0, Attr::triggerPostLoad, "Joint line angle, counter-clockwise from +x [deg] (a joint dipping 70° into a slope "
-			"whose face looks towards +x: 180-70 = 110)."))
-		((Real, spacing, 0, Attr::triggerPostLoad, "Normal distance between joints [m]; 0: only the joint through ``origin``."))
-		((Real, jointLength, std::numeric_limits<Real>::infinity(), Attr::triggerPostLoad, "Length of each joint segment [m] (> 0)."))
-		((Real, bridgeLength, 0, Attr::triggerPostLoad, "Rock bridge between joint segments [m] (>= 0); persistence = jointLength/(jointLength+bridgeLength)."))
-		((Real, phase, 0, Attr::triggerPostLoad, "Where the first joint segment starts along the joint, from ``origin`` [m]."))
-		((vector<Vector2r>, segmentStarts, , , "Explicit joints (merged joints, joints digitised from a photo): start points [m]."))
-		((vector<Vector2r>, segmentEnds, , , "Explicit joints: end points [m]."))
-		,
-		/*ctor*/,
-		.def("segments", &JointSetGeometry::segmentsPy, (boost::python::arg("lo"), boost::python::arg("hi")),
-			"Joint segments within the box lo..hi, as a list of (start, end) Vector2 pairs.")
-		.def("band", &JointSetGeometry::band, "Index of the band between two joints that holds a point (fully persistent sets).")
-	);
-	// clang-format on
-};
-REGISTER_SERIALIZABLE(JointSetGeometry);
 
 // Which disc pairs are joint contacts, and with which joint set.
 class JointSystem : public Serializable {

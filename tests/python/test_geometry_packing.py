@@ -1,0 +1,67 @@
+"""Cross-section predicates, joint-set geometry and the 2D packer, through YADE's Python."""
+import math
+
+import pytest
+from yade import pack
+from yade.wrapper import JointSetGeometry
+
+from toppling import geometry, packing
+
+L_SHAPE = [(0, 0), (2, 0), (2, 1), (1, 1), (1, 2), (0, 2)]
+
+
+def test_polygon_region_area_containment_and_holes():
+    l_shape = geometry.region(L_SHAPE)
+    assert l_shape.area() == pytest.approx(3.0)
+    assert l_shape.contains((0.5, 1.5)) and not l_shape.contains((1.5, 1.5))
+    square_with_hole = geometry.region([(0, 0), (10, 0), (10, 10), (0, 10)], holes=[[(4, 4), (6, 4), (6, 6), (4, 6)]])
+    assert square_with_hole.area() == pytest.approx(96.0)
+    assert not square_with_hole.contains((5, 5)) and not square_with_hole.contains((3.5, 5), 1.0)
+
+
+@pytest.mark.parametrize("vertices, message", [
+    ([(0, 0), (1, 1), (1, 0), (0, 1)], "self-intersecting"),
+    ([(0, 0), (1, 0)], "at least 3 vertices"),
+])
+def test_bad_polygons_are_rejected(vertices, message):
+    with pytest.raises(ValueError, match=message):
+        geometry.region(vertices)
+
+
+def test_predicates_combine_with_yade_pack_operators():
+    a = geometry.PolygonPredicate(geometry.region(L_SHAPE))
+    b = geometry.PolygonPredicate(geometry.region([(1.5, 0), (3, 0), (3, 3), (1.5, 3)]))
+    assert (a | b)((2.5, 2.5, 0)) and not a((2.5, 2.5, 0))
+    assert (a & b)((1.8, 0.5, 0)) and not (a & b)((0.5, 0.5, 0))
+    assert (a - b)((0.5, 0.5, 0)) and not (a - b)((1.8, 0.5, 0))
+    assert isinstance(a | b, pack.Predicate)
+
+
+def test_joint_set_geometry_and_bad_spacing():
+    joints = JointSetGeometry(origin=(0, 0), dip=90, spacing=0.1)
+    assert len(joints.segments((-0.05, 0), (0.95, 1))) == 10  # x = 0, 0.1, ..., 0.9
+    assert joints.band((0.25, 0.5)) == -3  # normal (-1, 0): bands count towards -x
+    with pytest.raises(ValueError, match="spacing"):
+        JointSetGeometry(spacing=-1.0)
+
+
+def test_packer_is_reproducible_and_meets_its_targets(empty_scene):
+    square = geometry.region([(0, 0), (0.05, 0), (0.05, 0.05), (0, 0.05)])
+    first = packing.pack_polygon(square, 1e-3, 2.5e-3, porosity=0.2, seed=7)
+    again = packing.pack_polygon(square, 1e-3, 2.5e-3, porosity=0.2, seed=7)
+    assert first.discs == again.discs
+    assert first.porosity == pytest.approx(0.2, abs=0.01)
+    assert all(square.containsMany([(x, y) for x, y, _ in first.discs], 0.0))
+    assert first.mean_overlap < 0.01 * 1e-3
+    assert len(first.discs) == pytest.approx(0.8 * 0.05**2 / (math.pi * (2.5e-3**3 - 1e-3**3) / (3 * 1.5e-3)), abs=1)
+
+
+@pytest.mark.parametrize("kwargs, message", [
+    (dict(rmin=3e-3, rmax=2e-3), "Rmin must not exceed Rmax"),
+    (dict(rmin=1e-3, rmax=2.5e-3, porosity=0.1), "unreachable"),
+    (dict(rmin=1e-3, rmax=2.5e-3, porosity=1.5), "porosity"),
+])
+def test_packer_rejects_bad_input(empty_scene, kwargs, message):
+    square = geometry.region([(0, 0), (0.05, 0), (0.05, 0.05), (0, 0.05)])
+    with pytest.raises(ValueError, match=message):
+        packing.pack_polygon(square, **kwargs)
