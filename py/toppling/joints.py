@@ -4,20 +4,15 @@ from __future__ import annotations
 from typing import Sequence
 
 from yade import O, utils
-from yade.wrapper import (InteractionLoop, Ip2_ParallelBondMat_ParallelBondMat_ParallelBondPhys,
+from yade.wrapper import (Ip2_ParallelBondMat_ParallelBondMat_ParallelBondPhys,
                           JointSetGeometry, JointSystem, SmoothJointMat)
 
-from toppling.scene import limit_timestep
+from toppling.scene import functor, limit_timestep
 
 
 def rock_functor() -> Ip2_ParallelBondMat_ParallelBondMat_ParallelBondPhys:
     """The Ip2 that decides between rock (parallel bond) and joint (smooth joint)."""
-    for engine in O.engines:
-        if isinstance(engine, InteractionLoop):
-            for functor in engine.physDispatcher.functors:
-                if isinstance(functor, Ip2_ParallelBondMat_ParallelBondMat_ParallelBondPhys):
-                    return functor
-    raise LookupError("no Ip2_ParallelBondMat_ParallelBondMat_ParallelBondPhys in O.engines; build them with toppling.scene.engines()")
+    return functor(Ip2_ParallelBondMat_ParallelBondMat_ParallelBondPhys, "physDispatcher")
 
 
 def is_persistent(geometry: JointSetGeometry) -> bool:

@@ -89,11 +89,16 @@ def limit_timestep() -> None:
     O.dt = min(O.dt, dt) if O.iter > 0 else dt
 
 
-def bond_law():
-    """The scene's parallel-bond Law2 functor (holds the break records)."""
+def functor(cls, dispatcher: str = "lawDispatcher"):
+    """The scene's InteractionLoop functor of class ``cls`` (from its ``dispatcher``)."""
     for engine in O.engines:
         if isinstance(engine, InteractionLoop):
-            for functor in engine.lawDispatcher.functors:
-                if isinstance(functor, Law2_ScGeom_ParallelBondPhys_ParallelBond):
-                    return functor
-    raise LookupError("no Law2_ScGeom_ParallelBondPhys_ParallelBond in O.engines; build them with toppling.scene.engines()")
+            for f in getattr(engine, dispatcher).functors:
+                if isinstance(f, cls):
+                    return f
+    raise LookupError(f"no {cls.__name__} in O.engines; build them with toppling.scene.engines()")
+
+
+def bond_law() -> Law2_ScGeom_ParallelBondPhys_ParallelBond:
+    """The scene's parallel-bond Law2 functor (holds the break records)."""
+    return functor(Law2_ScGeom_ParallelBondPhys_ParallelBond)

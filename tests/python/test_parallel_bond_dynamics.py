@@ -5,7 +5,7 @@ import pytest
 from lattice import R, bonded_lattice, leapfrog_energy, material
 from yade import O
 
-from toppling import scene
+from toppling import bonding, scene
 
 
 def shake(ids, speed=0.01, seed=1):
@@ -109,3 +109,20 @@ def test_bad_inherited_values_set_later_stop_the_run(empty_scene, attribute, val
     O.dt = 1e-7
     O.run(100, True)
     assert O.iter < 100
+
+
+def test_bonding_after_settling_is_stress_free_and_limits_the_time_step(empty_scene):
+    # Thesis §3.2: discs settle under gravity first, then the bonds are installed.
+    mat = material(bondYoung=2e10)
+    ids = bonded_lattice(6, 6, mat, gravity=(0, -9.81, 0), fixed_bottom=True, local_damping=0.5)
+    law = scene.bond_law()
+    for i in list(O.interactions):  # start unbonded: remove the lattice's bonds
+        O.interactions.erase(i.id1, i.id2)
+    O.run(500, True)
+    dt_before = O.dt
+    bonds = bonding.bond_within_gap(1e-6 * R)
+    assert bonds == law.countBonds(1) > 50
+    assert all(i.phys.bondNormalForce == 0 and i.phys.bondMoment == 0 for i in O.interactions if i.phys.bondState == 1)
+    assert O.dt <= 0.5 * law.criticalTimeStep() * (1 + 1e-12) < dt_before  # bonds 20x stiffer than contacts
+    O.run(2000, True)
+    assert not law.unstable and not law.breakMode
