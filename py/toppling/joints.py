@@ -45,3 +45,12 @@ def install_joints(sets: Sequence[tuple[JointSetGeometry, SmoothJointMat]], lo, 
         utils.createInteraction(i, j)
     limit_timestep()
     return system
+
+
+def cut_bonds(geometry: JointSetGeometry, lo, hi) -> int:
+    """Only unbond the pairs across a joint: they go on as plain frictional disc contacts
+    (what smooth joints replace; for comparison). Returns the number of pairs cut."""
+    pairs = JointSystem().crossingPairs(geometry, lo, hi)
+    for i, j in pairs:
+        O.interactions.erase(i, j)  # the collider makes them plain contacts again
+    return len(pairs)
