@@ -23,50 +23,22 @@ import math
 
 from yade import O
 from yade.utils import readParamsFromTable
-from yade.wrapper import JointSetGeometry, ParallelBondMat, SmoothJointMat
 
-from toppling import bonding, geometry, joints, output, packing, scene
+from toppling import incline, output, scene
 
 readParamsFromTable(b=0.11, h=0.32, alpha=26.0, phi=26.5, rmax=0.008, smooth=1, duration=0.6, seed=1,
                     out="results/block_on_incline", noTableOk=True)
 from yade.params import table  # noqa: E402  (filled by readParamsFromTable)
 
 R_RATIO = 2.5          # Rmax / Rmin, thesis §5.2.3 (R 1-2.5 mm)
-POROSITY = 0.2         # reachable without locked-in overlap in thin strips (see README)
-G = 9.81
 ROCK = dict(young=15e6, knKs=1.4, density=2340.0, bondYoung=15.9e6, bondKnKs=1.8, normalDamping=0.13,
             bondNormalDamping=0.2)  # Table 5-6 stiffnesses; bonds unbreakable here
-rmin = table.rmax / R_RATIO
-slab_w, slab_t = 2 * table.b + 2 * table.h, 10 * table.rmax  # room to slide or topple downhill (+x)
 
-
-x0 = 0.5 * table.b  # block's left edge
-section = [(0, -slab_t), (slab_w, -slab_t), (slab_w, 0), (x0 + table.b, 0), (x0 + table.b, table.h), (x0, table.h),
-           (x0, 0), (0, 0)]
-discs = packing.pack_polygon(geometry.region(section), rmin, table.rmax, POROSITY, seed=table.seed).discs
-rock = ParallelBondMat(frictionAngle=math.radians(table.phi), bondTensileStrength=1e12, bondCohesion=1e12, **ROCK)
-slab = [O.bodies.append(scene.disc((x, y), r, rock, fixed=True)) for x, y, r in discs if y < 0]
-block = [O.bodies.append(scene.disc((x, y), r, rock)) for x, y, r in discs if y >= 0]
-O.engines = scene.engines(gravity=(0, -G, 0), local_damping=0.0)
-bonding.bond_within_gap(0.05 * rmin)
-interface, box = JointSetGeometry(origin=(0, 0), dip=0), ((-1, -1), (slab_w + 1, table.h + 1))
-if table.smooth:
-    mechanics = SmoothJointMat(normal=(0, 1, 0), normalStiffness=ROCK["bondYoung"] / (2 * rmin),
-                               shearStiffness=ROCK["bondYoung"] / (2 * rmin) / 1.8, frictionAngle=math.radians(table.phi))
-    joints.install_joints([(interface, mechanics)], *box)
-else:
-    joints.cut_bonds(interface, *box)
-
-a = math.radians(table.alpha)
-O.engines[-1].gravity = (G * math.sin(a), -G * math.cos(a), 0)  # the tilted table
-t_tilt = O.time
-toe = min(block, key=lambda i: (O.bodies[i].state.pos - (x0 + table.b, 0, 0)).norm())
-x_start, history = O.bodies[toe].state.pos[0], []
-
-
-def spin(i):
-    axis, angle = O.bodies[i].state.ori.toAxisAngle()
-    return angle * axis[2]
+setup = incline.build(table.b, table.h, table.rmax / R_RATIO, table.rmax, ROCK, table.phi, smooth=bool(table.smooth),
+                      seed=table.seed)
+incline.tilt(table.alpha)
+a, t_tilt = math.radians(table.alpha), O.time
+x_start, history = O.bodies[setup.toe].state.pos[0], []
 
 
 def failed(record):
@@ -76,8 +48,7 @@ def failed(record):
 
 while O.time < table.duration and not (history and failed(history[-1])):
     O.run(200, True)
-    rotation = math.degrees(sum(spin(i) for i in block) / len(block))
-    history.append((O.time, O.bodies[toe].state.pos[0] - x_start, rotation))
+    history.append((O.time, incline.toe_translation(setup, x_start), incline.rotation_deg(setup.block)))
     if scene.bond_law().unstable:
         raise RuntimeError("the run went unstable")
 
@@ -87,10 +58,10 @@ mode = "slide+topple" if slides and topples else "slide" if slides else "topple"
 t_end = history[-1][0] - t_tilt
 # Sliding from rest at constant acceleration: x = a t^2 / 2 (closed form g (sin a - tan phi cos a)).
 acceleration = output.comparison(2 * translation / t_end**2,
-                                 G * (math.sin(a) - math.tan(math.radians(table.phi)) * math.cos(a)), "m/s2")
+                                 incline.G * (math.sin(a) - math.tan(math.radians(table.phi)) * math.cos(a)), "m/s2")
 output.write_summary(table.out, output.table_inputs(table), mode=mode, translation=translation, rotation_deg=rotation,
                      acceleration=acceleration,
-                     discs=len(block) + len(slab), steps=O.iter,
+                     discs=len(setup.block) + len(setup.base), steps=O.iter,
                      closed_form={"b_over_h": table.b / table.h, "tan_alpha": math.tan(a),
                                   "tan_phi": math.tan(math.radians(table.phi))})
 fig, ax = output.figure("time (s)", "translation / b, rotation / 5 deg", "Block on an incline")
@@ -98,4 +69,4 @@ ax.plot([t for t, _, _ in history], [x / table.b for _, x, _ in history], label=
 ax.plot([t for t, _, _ in history], [r / 5 for _, _, r in history], label="rotation / 5 deg")
 ax.legend()
 output.save_figure(fig, table.out, "motion")
-print(f"mode {mode}: translation {translation * 1e3:.1f} mm, rotation {rotation:.1f} deg, {len(block)} block discs")
+print(f"mode {mode}: translation {translation * 1e3:.1f} mm, rotation {rotation:.1f} deg, {len(setup.block)} block discs")
