@@ -92,3 +92,28 @@ def test_friction_holds_below_and_slides_above_friction_angle(empty_scene, phi):
     a = math.radians(phi + 4)
     expected = G * (math.sin(a) - math.tan(math.radians(phi)) * math.cos(a))
     assert acceleration(block) == pytest.approx(expected, rel=0.05)
+
+
+def test_joint_normal_turns_with_rotating_blocks(empty_scene):
+    # Spin the whole block-on-slab assembly rigidly by 30° about the origin (kinematically): the
+    # joint normal must turn by 30° with it, and a rigid motion must load no joint.
+    block, system = block_on_slab(friction_deg=20)
+    O.engines[-1].gravity = (0, 0, 0)
+    spin_rate, turn = 10.0, math.radians(30)
+    for b in O.bodies:
+        b.state.blockedDOFs = "xyzXYZ"
+        b.dynamic = True
+    forces_before = [O.interactions[i, j].phys.jointNormalForce for i, j in zip(system.pairId1, system.pairId2)]
+    steps = int(turn / spin_rate / O.dt)
+    O.dt = turn / spin_rate / steps
+    for _ in range(steps):  # rigid rotation: v = w x r, updated each step
+        for b in O.bodies:
+            p = b.state.pos
+            b.state.vel = (-spin_rate * p[1], spin_rate * p[0], 0)
+            b.state.angVel = (0, 0, spin_rate)
+        O.step()
+    for (i, j), f0 in zip(zip(system.pairId1, system.pairId2), forces_before):
+        phys = O.interactions[i, j].phys
+        assert phys.jointNormal[0] == pytest.approx(-math.sin(turn), abs=2e-3)
+        assert phys.jointNormal[1] == pytest.approx(math.cos(turn), abs=2e-3)
+        assert phys.jointNormalForce == pytest.approx(f0, abs=0.02 * max(abs(f) for f in forces_before))
