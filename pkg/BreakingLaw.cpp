@@ -26,8 +26,10 @@ void BreakingLaw::reportInstability(const Interaction& I)
 		unstable          = true;
 		scene->stopAtIter = scene->iter + 1;
 		LOG_ERROR(
-		        "Bodies " << I.getId1() << " and " << I.getId2() << " moved more than a tenth of a radius relative to each other in one step, "
-		                  "or their force is not finite, at iteration " << scene->iter
+		        "Bodies " << I.getId1() << " and " << I.getId2()
+		                  << " moved more than a tenth of a radius relative to each other in one step, "
+		                     "or their force is not finite, at iteration "
+		                  << scene->iter
 		                  << ": the run is unstable and was stopped. Lower O.dt (or use GlobalStiffnessTimeStepper with "
 		                     "timestepSafetyCoefficient < 1) or raise the damping.");
 	}

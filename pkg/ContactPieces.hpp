@@ -61,7 +61,14 @@ namespace toppling {
 	// body 1), with one addForce and one addTorque per body: every call writes a flag shared by
 	// all threads in YADE's ForceContainer, so fewer calls scale better.
 	inline void applyContact(
-	        ForceContainer& forces, Body::id_t id1, const Vector3r& pos1, Body::id_t id2, const Vector3r& pos2, const Vector3r& point, const Vector3r& f, const Vector3r& m)
+	        ForceContainer& forces,
+	        Body::id_t      id1,
+	        const Vector3r& pos1,
+	        Body::id_t      id2,
+	        const Vector3r& pos2,
+	        const Vector3r& point,
+	        const Vector3r& f,
+	        const Vector3r& m)
 	{
 		forces.addForce(id1, f);
 		forces.addForce(id2, -f);

@@ -94,9 +94,9 @@ void Ip2_ParallelBondMat_ParallelBondMat_ParallelBondPhys::go(
 	phys->contactKs              = phys->contactKn / (0.5 * (mat1->knKs + mat2->knKs));
 	phys->tangensOfFrictionAngle = math::tan(math::min(mat1->frictionAngle, mat2->frictionAngle));
 
-	const Body& b1   = *Body::byId(interaction->getId1(), scene);
-	const Body& b2   = *Body::byId(interaction->getId2(), scene);
-	const Real  mEff = toppling::effectiveMass(b1, b2);
+	const Body& b1       = *Body::byId(interaction->getId1(), scene);
+	const Body& b2       = *Body::byId(interaction->getId2(), scene);
+	const Real  mEff     = toppling::effectiveMass(b1, b2);
 	phys->contactDamping = toppling::dashpotCoefficient(math::max(mat1->normalDamping, mat2->normalDamping), mEff, phys->contactKn);
 
 	// Bond properties are fixed now so that installing a bond later only needs the overlap.
@@ -109,8 +109,8 @@ void Ip2_ParallelBondMat_ParallelBondMat_ParallelBondPhys::go(
 		phys->bondInertia = 2. / 3. * math::pow(phys->bondRadius, 3) * t;
 		phys->bondKn      = math::min(mat1->bondYoung, mat2->bondYoung) / (r1 + r2);
 		phys->bondKs      = phys->bondKn / (0.5 * (mat1->bondKnKs + mat2->bondKnKs));
-		phys->bondDamping = toppling::dashpotCoefficient(
-		        math::max(mat1->bondNormalDamping, mat2->bondNormalDamping), mEff, phys->bondKn * phys->bondArea);
+		phys->bondDamping
+		        = toppling::dashpotCoefficient(math::max(mat1->bondNormalDamping, mat2->bondNormalDamping), mEff, phys->bondKn * phys->bondArea);
 	}
 	phys->bondTensileStrength = math::min(mat1->bondTensileStrength, mat2->bondTensileStrength);
 	phys->bondCohesion        = math::min(mat1->bondCohesion, mat2->bondCohesion);
@@ -138,13 +138,13 @@ bool Ip2_ParallelBondMat_ParallelBondMat_ParallelBondPhys::makeJoint(Interaction
 
 bool Law2_ScGeom_ParallelBondPhys_ParallelBond::go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip, Interaction* I)
 {
-	auto& geom = *static_cast<ScGeom*>(ig.get());
-	auto& phys = *static_cast<ParallelBondPhys*>(ip.get());
-	const Real un = geom.penetrationDepth;
+	auto&      geom = *static_cast<ScGeom*>(ig.get());
+	auto&      phys = *static_cast<ParallelBondPhys*>(ip.get());
+	const Real un   = geom.penetrationDepth;
 	if (!phys.isBonded() && un < 0) return false;
 
-	const Body&     b1 = *Body::byId(I->getId1(), scene);
-	const Body&     b2 = *Body::byId(I->getId2(), scene);
+	const Body&     b1   = *Body::byId(I->getId1(), scene);
+	const Body&     b2   = *Body::byId(I->getId2(), scene);
 	const Vector3r& n    = geom.normal;
 	const Vector3r  vRel = toppling::relativeVelocity(*b1.state, *b2.state, geom.contactPoint);
 	if (!toppling::stepIsSmall(vRel, scene->dt, geom.refR1, geom.refR2)) {
@@ -195,8 +195,7 @@ bool Law2_ScGeom_ParallelBondPhys_ParallelBond::go(shared_ptr<IGeom>& ig, shared
 }
 
 // Advances the bond by one step; false when it broke (the break is recorded).
-bool Law2_ScGeom_ParallelBondPhys_ParallelBond::updateBond(
-        const Interaction& I, ScGeom& geom, ParallelBondPhys& phys, const Vector3r& du, Real spin)
+bool Law2_ScGeom_ParallelBondPhys_ParallelBond::updateBond(const Interaction& I, ScGeom& geom, ParallelBondPhys& phys, const Vector3r& du, Real spin)
 {
 	const Real A = phys.bondArea, Ib = phys.bondInertia;
 	geom.rotate(phys.bondShearForce);
@@ -204,10 +203,10 @@ bool Law2_ScGeom_ParallelBondPhys_ParallelBond::updateBond(
 	phys.bondShearForce -= phys.bondKs * A * du;
 	phys.bondMoment -= phys.bondKn * Ib * spin;
 
-	const Real sigma   = phys.bondNormalForce / A; // compression positive
-	phys.bondSigmaMax  = -sigma + math::abs(phys.bondMoment) * phys.bondRadius / Ib;
-	phys.bondTauMax    = phys.bondShearForce.norm() / A;
-	int        mode    = ParallelBondPhys::intact;
+	const Real sigma  = phys.bondNormalForce / A; // compression positive
+	phys.bondSigmaMax = -sigma + math::abs(phys.bondMoment) * phys.bondRadius / Ib;
+	phys.bondTauMax   = phys.bondShearForce.norm() / A;
+	int mode          = ParallelBondPhys::intact;
 	if (phys.bondSigmaMax >= phys.bondTensileStrength) mode = ParallelBondPhys::brokenTension;
 	else if (phys.bondTauMax >= phys.bondCohesion + sigma * phys.bondTanFriction)
 		mode = ParallelBondPhys::brokenShear;

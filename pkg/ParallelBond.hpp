@@ -2,13 +2,13 @@
 // contact in parallel with an elastic-brittle bond that carries force and moment.
 #pragma once
 
+#include "BreakingLaw.hpp"
+#include "SmoothJoint.hpp"
 #include <lib/base/AliasNamespaces.hpp>
 #include <core/Dispatching.hpp>
 #include <pkg/common/ElastMat.hpp>
 #include <pkg/dem/FrictPhys.hpp>
 #include <pkg/dem/ScGeom.hpp>
-#include "BreakingLaw.hpp"
-#include "SmoothJoint.hpp"
 #include <limits>
 
 namespace yade {

@@ -36,7 +36,8 @@ namespace {
 	size_t                                     start = 0;
 	for (int n : holeSizes) {
 		if (n < 0 || start + n > holeVertices.size())
-			throw std::invalid_argument("PolygonRegion.holeSizes does not match holeVertices (" + std::to_string(holeVertices.size()) + " vertices).");
+			throw std::invalid_argument(
+			        "PolygonRegion.holeSizes does not match holeVertices (" + std::to_string(holeVertices.size()) + " vertices).");
 		holes.push_back(polygon(vector<Vector2r>(holeVertices.begin() + start, holeVertices.begin() + start + n), "holeVertices"));
 		start += n;
 	}
@@ -72,8 +73,8 @@ boost::python::tuple PolygonRegion::aabb() const
 	if (segmentStarts.size() != segmentEnds.size())
 		throw std::invalid_argument("JointSetGeometry: segmentStarts and segmentEnds must have the same length.");
 	for (size_t i = 0; i < segmentStarts.size(); ++i)
-		g.explicitSegments.push_back({ { double(segmentStarts[i].x()), double(segmentStarts[i].y()) },
-		                               { double(segmentEnds[i].x()), double(segmentEnds[i].y()) } });
+		g.explicitSegments.push_back(
+		        { { double(segmentStarts[i].x()), double(segmentStarts[i].y()) }, { double(segmentEnds[i].x()), double(segmentEnds[i].y()) } });
 	return g;
 }
 

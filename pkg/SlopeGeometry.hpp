@@ -12,7 +12,7 @@ namespace yade {
 namespace toppling {
 	inline ::toppling::geometry::Vec2 xy(const Vector2r& p) { return { double(p.x()), double(p.y()) }; }
 	inline ::toppling::geometry::Vec2 xy(const Vector3r& p) { return { double(p.x()), double(p.y()) }; }
-	::toppling::geometry::Box box(const Vector2r& lo, const Vector2r& hi);
+	::toppling::geometry::Box         box(const Vector2r& lo, const Vector2r& hi);
 } // namespace toppling
 
 // A cross-section: a simple polygon (possibly non-convex) minus holes.
@@ -50,9 +50,9 @@ REGISTER_SERIALIZABLE(PolygonRegion);
 class JointSetGeometry : public Serializable {
 public:
 	::toppling::geometry::JointSet toGeometry() const;
-	boost::python::list          segmentsPy(const Vector2r& lo, const Vector2r& hi) const;
-	long                         band(const Vector2r& p) const { return toGeometry().band({ p.x(), p.y() }); }
-	void                         postLoad(JointSetGeometry&) { toGeometry().validate(); }
+	boost::python::list            segmentsPy(const Vector2r& lo, const Vector2r& hi) const;
+	long                           band(const Vector2r& p) const { return toGeometry().band({ p.x(), p.y() }); }
+	void                           postLoad(JointSetGeometry&) { toGeometry().validate(); }
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(JointSetGeometry, Serializable,
 		"Where the joints of one set are, in the xy cross-section.",

@@ -13,8 +13,7 @@ using toppling::Range;
 
 void SmoothJointMat::validate() const
 {
-	if (math::abs(normal.norm() - 1) > 1e-6 || normal.z() != 0)
-		throw std::invalid_argument("SmoothJointMat.normal must be a unit vector in the xy-plane.");
+	if (math::abs(normal.norm() - 1) > 1e-6 || normal.z() != 0) throw std::invalid_argument("SmoothJointMat.normal must be a unit vector in the xy-plane.");
 	toppling::require("SmoothJointMat", "normalStiffness", normalStiffness, Range::positive());
 	toppling::require("SmoothJointMat", "shearStiffness", shearStiffness, Range::positive());
 	toppling::require("SmoothJointMat", "frictionAngle", frictionAngle, Range::angle());
@@ -52,7 +51,7 @@ void JointSystem::assignBlocks(const boost::python::list& persistentSets)
 	for (int i = 0; i < boost::python::len(persistentSets); ++i)
 		sets.push_back(boost::python::extract<const JointSetGeometry&>(persistentSets[i])().toGeometry());
 	::toppling::geometry::BlockIndex blocks(sets);
-	const Scene&                   sc = *Omega::instance().getScene();
+	const Scene&                     sc = *Omega::instance().getScene();
 	blockOfBody.assign(sc.bodies->size(), -1);
 	for (const auto& b : *sc.bodies)
 		if (b && dynamic_cast<const Sphere*>(b->shape.get())) blockOfBody[b->id] = blocks.blockId(toppling::xy(b->state->pos));
@@ -78,7 +77,7 @@ int JointSystem::setFor(Body::id_t id1, Body::id_t id2, const Vector3r& branch, 
 	if (block(id1) < 0 || block(id2) < 0 || block(id1) == block(id2)) return -1;
 	// Two blocks that were not in contact when the joints were installed: the set whose
 	// (rotated) joint plane is most nearly perpendicular to the centre line.
-	int  best = -1;
+	int  best          = -1;
 	Real bestAlignment = -1;
 	for (size_t s = 0; s < jointMaterials.size(); ++s) {
 		const auto* mat = dynamic_cast<const SmoothJointMat*>(sc.materials[jointMaterials[s]].get());
@@ -114,30 +113,27 @@ namespace toppling {
 		auto phys      = shared_ptr<SmoothJointPhys>(new SmoothJointPhys());
 		phys->jointSet = set;
 		// Orient the normal from body 1's side of the joint to body 2's.
-		const Vector3r n         = rotatedZ(mat.normal, meanRotation);
-		const Real     sign      = n.dot(branch) >= 0 ? 1 : -1;
-		phys->jointNormal0       = sign * mat.normal;
-		phys->jointNormal        = sign * n;
-		const Real rMin          = (r1 > 0 && r2 > 0) ? math::min(r1, r2) : math::max(r1, r2);
-		phys->area               = 2 * mat.radiusMultiplier * rMin * mat.thickness;
-		phys->normalStiffness    = mat.normalStiffness;
-		phys->shearStiffness     = mat.shearStiffness;
-		phys->kn                 = mat.normalStiffness * phys->area;
-		phys->ks                 = mat.shearStiffness * phys->area;
+		const Vector3r n             = rotatedZ(mat.normal, meanRotation);
+		const Real     sign          = n.dot(branch) >= 0 ? 1 : -1;
+		phys->jointNormal0           = sign * mat.normal;
+		phys->jointNormal            = sign * n;
+		const Real rMin              = (r1 > 0 && r2 > 0) ? math::min(r1, r2) : math::max(r1, r2);
+		phys->area                   = 2 * mat.radiusMultiplier * rMin * mat.thickness;
+		phys->normalStiffness        = mat.normalStiffness;
+		phys->shearStiffness         = mat.shearStiffness;
+		phys->kn                     = mat.normalStiffness * phys->area;
+		phys->ks                     = mat.shearStiffness * phys->area;
 		phys->tangensOfFrictionAngle = math::tan(mat.frictionAngle);
-		phys->tanDilation        = math::tan(mat.dilationAngle);
-		phys->overlap            = -mat.gap;
-		phys->bondState          = mat.bonded ? 1 : 0;
-		phys->tensileStrength    = mat.tensileStrength;
-		phys->cohesion           = mat.cohesion;
+		phys->tanDilation            = math::tan(mat.dilationAngle);
+		phys->overlap                = -mat.gap;
+		phys->bondState              = mat.bonded ? 1 : 0;
+		phys->tensileStrength        = mat.tensileStrength;
+		phys->cohesion               = mat.cohesion;
 		return phys;
 	}
 } // namespace toppling
 
-Real SmoothJointPhys::elasticEnergy() const
-{
-	return toppling::springEnergy(jointNormalForce, kn) + toppling::springEnergy(jointShearForce, ks);
-}
+Real SmoothJointPhys::elasticEnergy() const { return toppling::springEnergy(jointNormalForce, kn) + toppling::springEnergy(jointShearForce, ks); }
 
 /********************** Law2 **********************/
 
@@ -197,7 +193,14 @@ bool Law2_ScGeom_SmoothJointPhys_SmoothJoint::go(shared_ptr<IGeom>& ig, shared_p
 	phys.normalForce      = fn * n;
 	phys.shearForce       = fs * t;
 	toppling::applyContact(
-	        scene->forces, I->getId1(), b1.state->pos, I->getId2(), b2.state->pos, geom.contactPoint, -phys.normalForce - phys.shearForce, Vector3r::Zero());
+	        scene->forces,
+	        I->getId1(),
+	        b1.state->pos,
+	        I->getId2(),
+	        b2.state->pos,
+	        geom.contactPoint,
+	        -phys.normalForce - phys.shearForce,
+	        Vector3r::Zero());
 	return true;
 }
 

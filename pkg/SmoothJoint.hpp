@@ -4,11 +4,11 @@
 #pragma once
 
 #include "BreakingLaw.hpp"
+#include "SlopeGeometry.hpp"
 #include <lib/base/AliasNamespaces.hpp>
 #include <core/Material.hpp>
 #include <pkg/dem/FrictPhys.hpp>
 #include <pkg/dem/ScGeom.hpp>
-#include "SlopeGeometry.hpp"
 #include <unordered_map>
 
 namespace yade {
@@ -47,11 +47,11 @@ REGISTER_SERIALIZABLE(SmoothJointMat);
 class JointSystem : public Serializable {
 public:
 	// Joint set (index into jointMaterials) for a pair, or -1 for rock. `branch` is x2 - x1.
-	int  setFor(Body::id_t id1, Body::id_t id2, const Vector3r& branch, Real meanRotation, const Scene& scene) const;
-	void addPair(Body::id_t id1, Body::id_t id2, int set);
+	int                 setFor(Body::id_t id1, Body::id_t id2, const Vector3r& branch, Real meanRotation, const Scene& scene) const;
+	void                addPair(Body::id_t id1, Body::id_t id2, int set);
 	boost::python::list crossingPairs(const JointSetGeometry& set, const Vector2r& lo, const Vector2r& hi) const;
 	void                assignBlocks(const boost::python::list& persistentSets);
-	void postLoad(JointSystem&) { index.clear(); }
+	void                postLoad(JointSystem&) { index.clear(); }
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(JointSystem, Serializable,
 		"The joints of a scene: pairs of discs that straddle a joint segment (found when joints are installed, "
@@ -78,7 +78,7 @@ public:
 
 private:
 	mutable std::unordered_map<uint64_t, int> index; // pair key -> set, rebuilt lazily
-	static uint64_t key(Body::id_t a, Body::id_t b)
+	static uint64_t                           key(Body::id_t a, Body::id_t b)
 	{
 		if (a > b) std::swap(a, b);
 		return (uint64_t(uint32_t(a)) << 32) | uint32_t(b);
@@ -88,8 +88,8 @@ REGISTER_SERIALIZABLE(JointSystem);
 
 class SmoothJointPhys : public FrictPhys {
 public:
-	bool  isBonded() const { return bondState == 1; }
-	Real  elasticEnergy() const;
+	bool isBonded() const { return bondState == 1; }
+	Real elasticEnergy() const;
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(SmoothJointPhys, FrictPhys,
 		"Physics of a smooth-joint contact. ``kn``/``ks`` hold $k^jA$ [N/m] (for the time step), "

@@ -53,8 +53,7 @@ namespace geometry {
 
 	inline bool onSegment(Vec2 p, const Segment& s)
 	{
-		return std::min(s.a.x, s.b.x) <= p.x && p.x <= std::max(s.a.x, s.b.x) && std::min(s.a.y, s.b.y) <= p.y
-		        && p.y <= std::max(s.a.y, s.b.y);
+		return std::min(s.a.x, s.b.x) <= p.x && p.x <= std::max(s.a.x, s.b.x) && std::min(s.a.y, s.b.y) <= p.y && p.y <= std::max(s.a.y, s.b.y);
 	}
 
 	// True when the closed segments share at least one point.
@@ -63,8 +62,7 @@ namespace geometry {
 		const int o1 = orientation(s.a, s.b, t.a), o2 = orientation(s.a, s.b, t.b);
 		const int o3 = orientation(t.a, t.b, s.a), o4 = orientation(t.a, t.b, s.b);
 		if (o1 != o2 && o3 != o4) return true;
-		return (o1 == 0 && onSegment(t.a, s)) || (o2 == 0 && onSegment(t.b, s)) || (o3 == 0 && onSegment(s.a, t))
-		        || (o4 == 0 && onSegment(s.b, t));
+		return (o1 == 0 && onSegment(t.a, s)) || (o2 == 0 && onSegment(t.b, s)) || (o3 == 0 && onSegment(s.a, t)) || (o4 == 0 && onSegment(s.b, t));
 	}
 
 	// A simple closed polygon (vertices in either order, last edge implied).
@@ -75,7 +73,8 @@ namespace geometry {
 		{
 			if (v.size() < 3) throw std::invalid_argument("polygon needs at least 3 vertices, got " + std::to_string(v.size()));
 			for (size_t i = 0; i < v.size(); ++i)
-				if (norm(edge(i).b - edge(i).a) == 0) throw std::invalid_argument("polygon has a repeated vertex at index " + std::to_string(i));
+				if (norm(edge(i).b - edge(i).a) == 0)
+					throw std::invalid_argument("polygon has a repeated vertex at index " + std::to_string(i));
 			if (const int i = firstSelfIntersection(); i >= 0)
 				throw std::invalid_argument("polygon is self-intersecting: edge " + std::to_string(i) + " crosses a non-adjacent edge");
 		}

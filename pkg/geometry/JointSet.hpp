@@ -12,27 +12,28 @@ namespace geometry {
 	constexpr double pi = 3.14159265358979323846;
 
 	struct JointSet {
-		Vec2   origin;               // a point on one joint of the set [m]
-		double dipDeg       = 0;     // joint line angle, counter-clockwise from +x [deg]
-		double spacing      = 0;     // normal distance between joints [m] (0: only the joint through origin)
-		double jointLength  = std::numeric_limits<double>::infinity(); // length of each joint segment [m]
-		double bridgeLength = 0;     // intact rock between segments along a joint [m]
-		double phase        = 0;     // where the first segment starts along the joint, from origin [m]
-		std::vector<Segment> explicitSegments; // if not empty, these are the joints (spacing etc. unused)
+		Vec2                 origin;           // a point on one joint of the set [m]
+		double               dipDeg       = 0; // joint line angle, counter-clockwise from +x [deg]
+		double               spacing      = 0; // normal distance between joints [m] (0: only the joint through origin)
+		double               jointLength  = std::numeric_limits<double>::infinity(); // length of each joint segment [m]
+		double               bridgeLength = 0;                                       // intact rock between segments along a joint [m]
+		double               phase        = 0;                                       // where the first segment starts along the joint, from origin [m]
+		std::vector<Segment> explicitSegments;                                       // if not empty, these are the joints (spacing etc. unused)
 
-		Vec2 direction() const { return { std::cos(dipDeg * pi / 180), std::sin(dipDeg * pi / 180) }; }
-		Vec2 normal() const { return { -std::sin(dipDeg * pi / 180), std::cos(dipDeg * pi / 180) }; }
-		double persistence() const
-		{
-			return std::isinf(jointLength) ? 1.0 : jointLength / (jointLength + bridgeLength);
-		}
+		Vec2   direction() const { return { std::cos(dipDeg * pi / 180), std::sin(dipDeg * pi / 180) }; }
+		Vec2   normal() const { return { -std::sin(dipDeg * pi / 180), std::cos(dipDeg * pi / 180) }; }
+		double persistence() const { return std::isinf(jointLength) ? 1.0 : jointLength / (jointLength + bridgeLength); }
 
 		void validate() const
 		{
 			if (!explicitSegments.empty()) return;
-			if (!(spacing >= 0)) throw std::invalid_argument("joint set spacing = " + std::to_string(spacing) + " is invalid: it must be > 0 (or 0 for a single joint)");
-			if (!(jointLength > 0)) throw std::invalid_argument("joint set jointLength = " + std::to_string(jointLength) + " is invalid: it must be > 0");
-			if (!(bridgeLength >= 0)) throw std::invalid_argument("joint set bridgeLength = " + std::to_string(bridgeLength) + " is invalid: it must be >= 0");
+			if (!(spacing >= 0))
+				throw std::invalid_argument(
+				        "joint set spacing = " + std::to_string(spacing) + " is invalid: it must be > 0 (or 0 for a single joint)");
+			if (!(jointLength > 0))
+				throw std::invalid_argument("joint set jointLength = " + std::to_string(jointLength) + " is invalid: it must be > 0");
+			if (!(bridgeLength >= 0))
+				throw std::invalid_argument("joint set bridgeLength = " + std::to_string(bridgeLength) + " is invalid: it must be >= 0");
 		}
 
 		// Index of the band between two joints that holds p (fully persistent sets).
@@ -47,9 +48,9 @@ namespace geometry {
 		{
 			validate();
 			if (!explicitSegments.empty()) return explicitSegments;
-			const Vec2   n = normal(), d = direction();
-			const Vec2   corners[4] = { box.min, { box.max.x, box.min.y }, box.max, { box.min.x, box.max.y } };
-			double       sMin = std::numeric_limits<double>::infinity(), sMax = -sMin, tMin = sMin, tMax = -sMin;
+			const Vec2 n = normal(), d = direction();
+			const Vec2 corners[4] = { box.min, { box.max.x, box.min.y }, box.max, { box.min.x, box.max.y } };
+			double     sMin = std::numeric_limits<double>::infinity(), sMax = -sMin, tMin = sMin, tMax = -sMin;
 			for (const Vec2& c : corners) {
 				sMin = std::min(sMin, dot(c - origin, n));
 				sMax = std::max(sMax, dot(c - origin, n));
@@ -57,8 +58,8 @@ namespace geometry {
 				tMax = std::max(tMax, dot(c - origin, d));
 			}
 			std::vector<Segment> out;
-			const long first = spacing > 0 ? long(std::ceil(sMin / spacing)) : 0;
-			const long last  = spacing > 0 ? long(std::floor(sMax / spacing)) : 0;
+			const long           first = spacing > 0 ? long(std::ceil(sMin / spacing)) : 0;
+			const long           last  = spacing > 0 ? long(std::floor(sMax / spacing)) : 0;
 			for (long k = first; k <= last; ++k) {
 				const Vec2 foot = origin + (k * spacing) * n;
 				for (auto [t0, t1] : pieces(tMin, tMax)) {
@@ -74,7 +75,7 @@ namespace geometry {
 		std::vector<std::pair<double, double>> pieces(double tMin, double tMax) const
 		{
 			if (std::isinf(jointLength) || bridgeLength == 0) return { { tMin, tMax } };
-			const double period = jointLength + bridgeLength;
+			const double                           period = jointLength + bridgeLength;
 			std::vector<std::pair<double, double>> out;
 			for (double t = phase + std::floor((tMin - phase) / period) * period; t < tMax; t += period)
 				out.push_back({ std::max(t, tMin), std::min(t + jointLength, tMax) });
@@ -83,8 +84,8 @@ namespace geometry {
 		// Liang-Barsky clipping of s to the box; false when nothing is left.
 		static bool clip(Segment& s, const Box& b)
 		{
-			const Vec2 d = s.b - s.a;
-			double     t0 = 0, t1 = 1;
+			const Vec2   d  = s.b - s.a;
+			double       t0 = 0, t1 = 1;
 			const double p[4] = { -d.x, d.x, -d.y, d.y };
 			const double q[4] = { s.a.x - b.min.x, b.max.x - s.a.x, s.a.y - b.min.y, b.max.y - s.a.y };
 			for (int i = 0; i < 4; ++i) {
@@ -125,7 +126,7 @@ namespace geometry {
 		}
 
 	private:
-		std::vector<JointSet>             sets_;
+		std::vector<JointSet>            sets_;
 		std::map<std::vector<long>, int> ids_;
 	};
 

@@ -108,9 +108,9 @@ TEST(JointSet, InvalidSpacingIsRejected)
 TEST(BlockIndex, TwoSetsMakeRectangularBlocks)
 {
 	JointSet vertical, horizontal;
-	vertical.dipDeg   = 90;
-	vertical.spacing  = 1;
-	horizontal.dipDeg = 0;
+	vertical.dipDeg    = 90;
+	vertical.spacing   = 1;
+	horizontal.dipDeg  = 0;
 	horizontal.spacing = 2;
 	BlockIndex blocks({ vertical, horizontal });
 	const int  a = blocks.blockId({ 0.5, 0.5 });
