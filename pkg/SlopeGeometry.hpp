@@ -23,7 +23,10 @@ public:
 	boost::python::list          containsMany(const boost::python::list& points, Real pad) const;
 	Real                         area() const { return toGeometry().area(); }
 	boost::python::tuple         aabb() const;
-	void                         postLoad(PolygonRegion&) { toGeometry(); }
+	void                         postLoad(PolygonRegion&)
+	{
+		if (!vertices.empty()) toGeometry(); // empty: not defined yet (default-constructed)
+	}
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(PolygonRegion, Serializable,
 		"A slope cross-section in the xy-plane: a simple polygon, possibly non-convex, minus holes. Bad input "
