@@ -23,7 +23,7 @@ START_SIZE = 0.6      # discs are placed at this fraction of their radius
 GROWTH_STAGES = 20
 STEPS_PER_STAGE = 100
 MAX_MEAN_OVERLAP = 0.01  # of Rmin: above it the porosity is not reachable without locked-in stress
-RELAX_ROUNDS, RELAX_STEPS = 20, 250
+RELAX_ROUNDS, RELAX_STEPS = 40, 250
 
 
 @dataclass
