@@ -1,4 +1,5 @@
 #include "BreakingLaw.hpp"
+#include "ContactPieces.hpp"
 #include <core/Scene.hpp>
 
 namespace yade {
@@ -17,6 +18,18 @@ void BreakingLaw::recordBreak(const Interaction& I, const Vector3r& where, int m
 		breakId1.push_back(I.getId1());
 		breakId2.push_back(I.getId2());
 	}
+}
+
+void BreakingLaw::applyForces(const Interaction& I, const Vector3r& contactPoint, const NormShearPhys& phys, Real couple)
+{
+	const Vector3r f = -phys.normalForce - phys.shearForce; // on body 1
+	if (!f.allFinite() || !math::isfinite(couple)) {
+		reportInstability(I);
+		return;
+	}
+	const Body::id_t id1 = I.getId1(), id2 = I.getId2();
+	toppling::applyContact(
+	        scene->forces, id1, Body::byId(id1, scene)->state->pos, id2, Body::byId(id2, scene)->state->pos, contactPoint, f, Vector3r(0, 0, couple));
 }
 
 void BreakingLaw::reportInstability(const Interaction& I)

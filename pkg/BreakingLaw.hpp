@@ -4,6 +4,7 @@
 
 #include <lib/base/AliasNamespaces.hpp>
 #include <core/Dispatching.hpp>
+#include <pkg/common/NormShearPhys.hpp>
 
 namespace yade {
 
@@ -12,6 +13,9 @@ public:
 	enum Mode { tension = 2, shear = 3 };
 	void recordBreak(const Interaction& I, const Vector3r& where, int mode, Real energy);
 	void reportInstability(const Interaction& I);
+	// Applies the physics' force on body 2 (normalForce + shearForce, minus it on body 1) at the
+	// contact point and a couple about z on body 2; a non-finite force stops the run instead.
+	void applyForces(const Interaction& I, const Vector3r& contactPoint, const NormShearPhys& phys, Real couple);
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS(BreakingLaw, LawFunctor,
 		"Base of the toppling laws: keeps one record per broken bond (time, position, mode, released energy, "

@@ -178,19 +178,7 @@ bool Law2_ScGeom_ParallelBondPhys_ParallelBond::go(shared_ptr<IGeom>& ig, shared
 
 	phys.normalForce = (phys.contactNormalForce + phys.bondNormalForce + dampingFn) * n;
 	phys.shearForce  = phys.contactShearForce + phys.bondShearForce;
-	if (!phys.normalForce.allFinite() || !phys.shearForce.allFinite() || !math::isfinite(phys.bondMoment)) {
-		reportInstability(*I);
-		return true;
-	}
-	toppling::applyContact(
-	        scene->forces,
-	        I->getId1(),
-	        b1.state->pos,
-	        I->getId2(),
-	        b2.state->pos,
-	        geom.contactPoint,
-	        -phys.normalForce - phys.shearForce,
-	        Vector3r(0, 0, phys.bondMoment));
+	applyForces(*I, geom.contactPoint, phys, phys.bondMoment);
 	return true;
 }
 

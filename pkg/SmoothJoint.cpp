@@ -192,15 +192,7 @@ bool Law2_ScGeom_SmoothJointPhys_SmoothJoint::go(shared_ptr<IGeom>& ig, shared_p
 	phys.jointShearForce  = fs;
 	phys.normalForce      = fn * n;
 	phys.shearForce       = fs * t;
-	toppling::applyContact(
-	        scene->forces,
-	        I->getId1(),
-	        b1.state->pos,
-	        I->getId2(),
-	        b2.state->pos,
-	        geom.contactPoint,
-	        -phys.normalForce - phys.shearForce,
-	        Vector3r::Zero());
+	applyForces(*I, geom.contactPoint, phys, 0);
 	return true;
 }
 
