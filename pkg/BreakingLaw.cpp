@@ -20,16 +20,15 @@ void BreakingLaw::recordBreak(const Interaction& I, const Vector3r& where, int m
 	}
 }
 
-void BreakingLaw::applyForces(const Interaction& I, const Vector3r& contactPoint, const NormShearPhys& phys, Real couple)
+void BreakingLaw::applyForces(
+        const Interaction& I, const Vector3r& pos1, const Vector3r& pos2, const Vector3r& contactPoint, const NormShearPhys& phys, Real couple)
 {
 	const Vector3r f = -phys.normalForce - phys.shearForce; // on body 1
 	if (!f.allFinite() || !math::isfinite(couple)) {
 		reportInstability(I);
 		return;
 	}
-	const Body::id_t id1 = I.getId1(), id2 = I.getId2();
-	toppling::applyContact(
-	        scene->forces, id1, Body::byId(id1, scene)->state->pos, id2, Body::byId(id2, scene)->state->pos, contactPoint, f, Vector3r(0, 0, couple));
+	toppling::applyContact(scene->forces, I.getId1(), pos1, I.getId2(), pos2, contactPoint, f, Vector3r(0, 0, couple));
 }
 
 void BreakingLaw::reportInstability(const Interaction& I)

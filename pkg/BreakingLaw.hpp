@@ -15,7 +15,8 @@ public:
 	void reportInstability(const Interaction& I);
 	// Applies the physics' force on body 2 (normalForce + shearForce, minus it on body 1) at the
 	// contact point and a couple about z on body 2; a non-finite force stops the run instead.
-	void applyForces(const Interaction& I, const Vector3r& contactPoint, const NormShearPhys& phys, Real couple);
+	void
+	applyForces(const Interaction& I, const Vector3r& pos1, const Vector3r& pos2, const Vector3r& contactPoint, const NormShearPhys& phys, Real couple);
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS(BreakingLaw, LawFunctor,
 		"Base of the toppling laws: keeps one record per broken bond (time, position, mode, released energy, "

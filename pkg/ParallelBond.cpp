@@ -31,17 +31,14 @@ void ParallelBondMat::validate() const
 
 void ParallelBondPhys::installBond(Real overlap)
 {
-	bondState       = intact;
-	bondRefOverlap  = overlap;
-	bondNormalForce = 0;
-	bondShearForce  = Vector3r::Zero();
-	bondMoment      = 0;
-	updateTotalStiffness();
+	bondRefOverlap = overlap;
+	setBondState(intact);
 }
 
-void ParallelBondPhys::removeBond(int mode)
+// Any change of bond state starts the bond from zero force and updates the total stiffness.
+void ParallelBondPhys::setBondState(int state)
 {
-	bondState       = mode;
+	bondState       = state;
 	bondNormalForce = 0;
 	bondShearForce  = Vector3r::Zero();
 	bondMoment      = 0;
@@ -178,7 +175,7 @@ bool Law2_ScGeom_ParallelBondPhys_ParallelBond::go(shared_ptr<IGeom>& ig, shared
 
 	phys.normalForce = (phys.contactNormalForce + phys.bondNormalForce + dampingFn) * n;
 	phys.shearForce  = phys.contactShearForce + phys.bondShearForce;
-	applyForces(*I, geom.contactPoint, phys, phys.bondMoment);
+	applyForces(*I, b1.state->pos, b2.state->pos, geom.contactPoint, phys, phys.bondMoment);
 	return true;
 }
 
@@ -201,7 +198,7 @@ bool Law2_ScGeom_ParallelBondPhys_ParallelBond::updateBond(const Interaction& I,
 	if (mode == ParallelBondPhys::intact) return true;
 
 	recordBreak(I, geom.contactPoint, mode, phys.bondEnergy());
-	phys.removeBond(mode);
+	phys.setBondState(mode);
 	return false;
 }
 

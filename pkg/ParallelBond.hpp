@@ -51,7 +51,7 @@ public:
 	enum BondState { unbonded = 0, intact = 1, brokenTension = 2, brokenShear = 3 };
 	bool isBonded() const { return bondState == intact; }
 	void installBond(Real overlap);
-	void removeBond(int mode);
+	void setBondState(int state);
 	Real bondEnergy() const;
 	Real contactEnergy() const;
 	void updateTotalStiffness();

@@ -29,18 +29,15 @@ void SmoothJointMat::validate() const
 
 boost::python::list JointSystem::crossingPairs(const JointSetGeometry& set, const Vector2r& lo, const Vector2r& hi) const
 {
-	const auto          joints = set.toGeometry().segments(toppling::box(lo, hi));
-	const Scene&        sc     = *Omega::instance().getScene();
-	boost::python::list out;
+	const std::vector<std::vector<::toppling::geometry::Segment>> joints { set.toGeometry().segments(toppling::box(lo, hi)) };
+	const Scene&                                                  sc = *Omega::instance().getScene();
+	boost::python::list                                           out;
 	for (const auto& I : *sc.interactions) {
 		if (!I->isReal()) continue;
 		const Vector3r& p = (*sc.bodies)[I->getId1()]->state->pos;
 		const Vector3r& q = (*sc.bodies)[I->getId2()]->state->pos;
-		for (const auto& j : joints)
-			if (::toppling::geometry::intersects({ toppling::xy(p), toppling::xy(q) }, j)) {
-				out.append(boost::python::make_tuple(I->getId1(), I->getId2()));
-				break;
-			}
+		if (::toppling::geometry::crossedSet(joints, toppling::xy(p), toppling::xy(q)) >= 0)
+			out.append(boost::python::make_tuple(I->getId1(), I->getId2()));
 	}
 	return out;
 }
@@ -192,7 +189,7 @@ bool Law2_ScGeom_SmoothJointPhys_SmoothJoint::go(shared_ptr<IGeom>& ig, shared_p
 	phys.jointShearForce  = fs;
 	phys.normalForce      = fn * n;
 	phys.shearForce       = fs * t;
-	applyForces(*I, geom.contactPoint, phys, 0);
+	applyForces(*I, b1.state->pos, b2.state->pos, geom.contactPoint, phys, 0);
 	return true;
 }
 
