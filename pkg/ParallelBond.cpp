@@ -29,9 +29,11 @@ void ParallelBondMat::validate() const
 
 /********************** ParallelBondPhys **********************/
 
-void ParallelBondPhys::installBond(Real overlap)
+void ParallelBondPhys::installBond(Real overlap, const Vector3r& direction)
 {
+	if (!(direction.norm() > 0)) throw std::invalid_argument("ParallelBondPhys.installBond: direction must be a non-zero vector.");
 	bondRefOverlap = overlap;
+	bondDirection0 = direction.normalized();
 	setBondState(intact);
 }
 
@@ -121,13 +123,14 @@ bool Ip2_ParallelBondMat_ParallelBondMat_ParallelBondPhys::makeJoint(Interaction
 	const State&   s1     = *Body::byId(interaction.getId1(), scene)->state;
 	const State&   s2     = *Body::byId(interaction.getId2(), scene)->state;
 	const Vector3r branch = s2.pos - s1.pos;
-	const Real     spin   = toppling::meanSpin(s1, s2);
-	const int      set    = joints->setFor(interaction.getId1(), interaction.getId2(), branch, spin, *scene);
+	Real           turn   = 0; // discs without intact bonds: the joint as installed
+	toppling::pairTurn(*Body::byId(interaction.getId1(), scene), *Body::byId(interaction.getId2(), scene), *scene, turn);
+	const int set = joints->setFor(interaction.getId1(), interaction.getId2(), branch, turn, *scene);
 	if (set < 0) return false;
 	const auto* mat  = dynamic_cast<const SmoothJointMat*>(scene->materials[joints->jointMaterials[set]].get());
-	const auto* geom = dynamic_cast<const GenericSpheresContact*>(interaction.geom.get());
+	const auto* geom = dynamic_cast<const ScGeom*>(interaction.geom.get());
 	if (!mat || !geom) return false;
-	interaction.phys = toppling::makeSmoothJoint(*mat, set, geom->refR1, geom->refR2, branch, spin);
+	interaction.phys = toppling::makeSmoothJoint(*mat, set, *geom, branch, turn);
 	return true;
 }
 
@@ -245,5 +248,25 @@ int Law2_ScGeom_ParallelBondPhys_ParallelBond::countBonds(int state) const
 	}
 	return count;
 }
+
+namespace toppling {
+	bool meanBondTurn(const Body& body, const Scene& scene, Real& turn)
+	{
+		Real sum   = 0;
+		int  bonds = 0;
+		for (const auto& idAndInteraction : body.intrs) {
+			const Interaction& I    = *idAndInteraction.second;
+			const auto*        bond = dynamic_cast<const ParallelBondPhys*>(I.phys.get());
+			if (!bond || !bond->isBonded()) continue;
+			const Vector3r  d  = (*scene.bodies)[I.getId2()]->state->pos - (*scene.bodies)[I.getId1()]->state->pos;
+			const Vector3r& d0 = bond->bondDirection0;
+			sum += math::atan2(d0.x() * d.y() - d0.y() * d.x(), d0.dot(d));
+			++bonds;
+		}
+		if (bonds < 2) return false;
+		turn = sum / bonds;
+		return true;
+	}
+} // namespace toppling
 
 } // namespace yade

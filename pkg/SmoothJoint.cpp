@@ -1,5 +1,6 @@
 #include "SmoothJoint.hpp"
 #include "ContactPieces.hpp"
+#include "ParallelBond.hpp"
 #include "Validation.hpp"
 #include <core/Omega.hpp>
 #include <core/Scene.hpp>
@@ -63,7 +64,7 @@ void JointSystem::addPair(Body::id_t id1, Body::id_t id2, int set)
 	index.clear();
 }
 
-int JointSystem::setFor(Body::id_t id1, Body::id_t id2, const Vector3r& branch, Real meanRotation, const Scene& sc) const
+int JointSystem::setFor(Body::id_t id1, Body::id_t id2, const Vector3r& branch, Real rockTurn, const Scene& sc) const
 {
 	if (index.empty() && !pairSet.empty()) {
 		for (size_t i = 0; i < pairSet.size(); ++i)
@@ -79,7 +80,7 @@ int JointSystem::setFor(Body::id_t id1, Body::id_t id2, const Vector3r& branch, 
 	for (size_t s = 0; s < jointMaterials.size(); ++s) {
 		const auto* mat = dynamic_cast<const SmoothJointMat*>(sc.materials[jointMaterials[s]].get());
 		if (!mat) continue;
-		const Real alignment = math::abs(toppling::rotatedZ(mat->normal, meanRotation).dot(branch.normalized()));
+		const Real alignment = math::abs(toppling::rotatedZ(mat->normal, rockTurn).dot(branch.normalized()));
 		if (alignment > bestAlignment) {
 			bestAlignment = alignment;
 			best          = int(s);
@@ -91,12 +92,14 @@ int JointSystem::setFor(Body::id_t id1, Body::id_t id2, const Vector3r& branch, 
 /********************** geometry helpers **********************/
 
 namespace toppling {
-	Real spinAngle(const Quaternionr& q) { return 2 * math::atan2(q.z(), q.w()); }
-
-	Real meanSpin(const State& s1, const State& s2)
+	bool pairTurn(const Body& b1, const Body& b2, const Scene& scene, Real& turn)
 	{
-		const Real a = spinAngle(s1.ori), b = spinAngle(s2.ori);
-		return a + 0.5 * math::atan2(math::sin(b - a), math::cos(b - a)); // halfway along the shorter arc
+		Real       a = 0, b = 0;
+		const bool has1 = meanBondTurn(b1, scene, a), has2 = meanBondTurn(b2, scene, b);
+		if (has1 && has2) turn = a + 0.5 * math::atan2(math::sin(b - a), math::cos(b - a)); // halfway along the shorter arc
+		else if (has1 || has2)
+			turn = has1 ? a : b;
+		return has1 || has2;
 	}
 
 	Vector3r rotatedZ(const Vector3r& v, Real angle)
@@ -105,15 +108,16 @@ namespace toppling {
 		return Vector3r(c * v.x() - s * v.y(), s * v.x() + c * v.y(), 0);
 	}
 
-	shared_ptr<SmoothJointPhys> makeSmoothJoint(const SmoothJointMat& mat, int set, Real r1, Real r2, const Vector3r& branch, Real meanRotation)
+	shared_ptr<SmoothJointPhys> makeSmoothJoint(const SmoothJointMat& mat, int set, const ScGeom& geom, const Vector3r& branch, Real rockTurn)
 	{
 		auto phys      = shared_ptr<SmoothJointPhys>(new SmoothJointPhys());
 		phys->jointSet = set;
 		// Orient the normal from body 1's side of the joint to body 2's.
-		const Vector3r n             = rotatedZ(mat.normal, meanRotation);
-		const Real     sign          = n.dot(branch) >= 0 ? 1 : -1;
-		phys->jointNormal0           = sign * mat.normal;
-		phys->jointNormal            = sign * n;
+		const Vector3r n    = rotatedZ(mat.normal, rockTurn);
+		const Real     sign = n.dot(branch) >= 0 ? 1 : -1;
+		phys->jointNormal0  = sign * mat.normal;
+		phys->jointNormal   = sign * n;
+		const Real r1 = geom.refR1, r2 = geom.refR2;
 		const Real rMin              = (r1 > 0 && r2 > 0) ? math::min(r1, r2) : math::max(r1, r2);
 		phys->area                   = 2 * mat.radiusMultiplier * rMin * mat.thickness;
 		phys->normalStiffness        = mat.normalStiffness;
@@ -123,9 +127,11 @@ namespace toppling {
 		phys->tangensOfFrictionAngle = math::tan(mat.frictionAngle);
 		phys->tanDilation            = math::tan(mat.dilationAngle);
 		phys->overlap                = -mat.gap;
-		phys->bondState              = mat.bonded ? 1 : 0;
-		phys->tensileStrength        = mat.tensileStrength;
-		phys->cohesion               = mat.cohesion;
+		// Slack of 5 % of the smaller radius: elastic shear and round-off must not end a loaded contact.
+		phys->releasePenetration = math::min(Real(0), geom.penetrationDepth) - 0.05 * rMin;
+		phys->bondState          = mat.bonded ? 1 : 0;
+		phys->tensileStrength    = mat.tensileStrength;
+		phys->cohesion           = mat.cohesion;
 		return phys;
 	}
 } // namespace toppling
@@ -146,11 +152,12 @@ bool Law2_ScGeom_SmoothJointPhys_SmoothJoint::go(shared_ptr<IGeom>& ig, shared_p
 		reportInstability(*I);
 		return true;
 	}
-	// The joint turns with the blocks: its normal follows the discs' mean rotation.
-	const Vector3r n  = toppling::rotatedZ(phys.jointNormal0, toppling::meanSpin(*b1.state, *b2.state));
+	if (!phys.isBonded() && geom.penetrationDepth < phys.releasePenetration) return false; // slid or opened apart
+	Real turn = 0;
+	if (toppling::pairTurn(b1, b2, *scene, turn)) phys.jointNormal = toppling::rotatedZ(phys.jointNormal0, turn);
+	const Vector3r n  = phys.jointNormal;
 	const Vector3r t  = Vector3r::UnitZ().cross(n);
 	const Vector3r du = vRel * scene->dt;
-	phys.jointNormal  = n;
 	phys.overlap -= du.dot(n);
 
 	const Real knA = phys.kn, ksA = phys.ks, A = phys.area;
@@ -173,7 +180,7 @@ bool Law2_ScGeom_SmoothJointPhys_SmoothJoint::go(shared_ptr<IGeom>& ig, shared_p
 		if (phys.overlap <= 0) { // open joint
 			phys.jointNormalForce = phys.jointShearForce = 0;
 			phys.normalForce = phys.shearForce = Vector3r::Zero();
-			return geom.penetrationDepth >= 0;
+			return true;
 		}
 		const Real limit = phys.tangensOfFrictionAngle * fn;
 		if (math::abs(fs) > limit) {

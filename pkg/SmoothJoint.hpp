@@ -47,7 +47,7 @@ REGISTER_SERIALIZABLE(SmoothJointMat);
 class JointSystem : public Serializable {
 public:
 	// Joint set (index into jointMaterials) for a pair, or -1 for rock. `branch` is x2 - x1.
-	int                 setFor(Body::id_t id1, Body::id_t id2, const Vector3r& branch, Real meanRotation, const Scene& scene) const;
+	int                 setFor(Body::id_t id1, Body::id_t id2, const Vector3r& branch, Real rockTurn, const Scene& scene) const;
 	void                addPair(Body::id_t id1, Body::id_t id2, int set);
 	boost::python::list crossingPairs(const JointSetGeometry& set, const Vector2r& lo, const Vector2r& hi) const;
 	void                assignBlocks(const boost::python::list& persistentSets);
@@ -96,12 +96,13 @@ public:
 		"``normalForce``/``shearForce`` the force on body 2 along the joint normal and plane.",
 		((int, jointSet, -1, , "Joint set index (in :yref:`JointSystem.jointMaterials`)."))
 		((Vector3r, jointNormal0, Vector3r(0, 1, 0), , "Joint normal for unrotated discs, pointing from body 1's side to body 2's [-]."))
-		((Vector3r, jointNormal, Vector3r(0, 1, 0), , "Current joint normal: ``jointNormal0`` rotated by the mean rotation of the two discs."))
+		((Vector3r, jointNormal, Vector3r(0, 1, 0), , "Current joint normal: ``jointNormal0`` turned with the rock around the two discs."))
 		((Real, area, 0, , "Joint area $A$ [m²]."))
 		((Real, normalStiffness, 0, , "$k_n^j$ [N/m³]."))
 		((Real, shearStiffness, 0, , "$k_s^j$ [N/m³]."))
 		((Real, tanDilation, 0, , "$\\tan\\psi$ [-]."))
 		((Real, overlap, 0, , "Normal closure along the joint normal [m]; starts at $-g_j$."))
+		((Real, releasePenetration, 0, , "The unbonded contact ends once the discs' geometric penetration (``geom.penetrationDepth``) falls below this [m]: min(0, penetration when the joint contact was made) minus 5 % of the smaller radius."))
 		((Real, jointNormalForce, 0, , "Normal force [N], compression positive."))
 		((Real, jointShearForce, 0, , "Shear force along the joint tangent $\\hat z\\times\\hat n$ on body 2 [N]."))
 		((Real, slip, 0, , "Accumulated plastic slip [m]."))
@@ -125,12 +126,17 @@ public:
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(Law2_ScGeom_SmoothJointPhys_SmoothJoint, BreakingLaw,
 		"Smooth-joint law (Pierce 2007, Mas Ivars 2011; PFC2D). The relative displacement of the contact point is "
-		"split along the joint normal $\\hat n$ (which turns with the mean rotation of the two discs, so it follows "
-		"rotating blocks) and the joint plane: $\\Delta F_n = k_n^jA\\Delta u_n$, $\\Delta F_s=-k_s^jA\\Delta u_s$. "
+		"split along the joint normal $\\hat n$ and the joint plane: $\\Delta F_n = k_n^jA\\Delta u_n$, $\\Delta F_s=-k_s^jA\\Delta u_s$. "
 		"Unbonded: no tension ($F_n=F_s=0$ while open), Coulomb slip $|F_s|\\le\\tan\\phi_j F_n$, and slipping by "
 		"$\\Delta u_s^p$ closes the joint by $\\Delta u_s^p\\tan\\psi$ (dilation against the confinement). Bonded: "
 		"breaks in tension at $-F_n/A\\ge\\sigma_t$, else in shear at $|F_s|/A\\ge c+\\tan\\phi_j F_n/A$ (recorded as a "
-		"bond break) and goes on unbonded. No moment. The contact is removed when open and the discs apart.",
+		"bond break) and goes on unbonded. No moment. An unbonded contact ends when its discs have moved apart (slid past each "
+		"other or opened) further than they were when it was made; discs that come together later across the joint "
+		"make a new, stress-free joint contact, so the load passes from pair to pair as a block slides. "
+		"The normal turns with the rock on both sides: by the mean turn of the two discs' intact parallel bonds since "
+		"they were installed (:yref:`ParallelBondPhys.bondDirection0`), not by the discs' own spin, which for a disc "
+		"loose in a pore is meaningless; a disc counts only with at least two intact bonds, and the normal stays put "
+		"while neither disc counts.",
 		/*attrs*/,
 		/*ctor*/,
 		/*py*/
@@ -141,14 +147,13 @@ public:
 REGISTER_SERIALIZABLE(Law2_ScGeom_SmoothJointPhys_SmoothJoint);
 
 namespace toppling {
-	// Rotation angle about z of a disc's orientation [rad].
-	Real spinAngle(const Quaternionr& q);
-	// Mean rotation angle about z of two discs [rad].
-	Real meanSpin(const State& s1, const State& s2);
+	// The rock's rotation at a pair of discs [rad]: the mean of meanBondTurn of the two (or the one
+	// that has intact bonds); false, turn untouched, when neither has.
+	bool pairTurn(const Body& b1, const Body& b2, const Scene& scene, Real& turn);
 	// v rotated by angle about z.
 	Vector3r rotatedZ(const Vector3r& v, Real angle);
 	// Smooth-joint physics for a pair of discs of radii r1, r2, with joint set `set` of material `mat`.
-	shared_ptr<SmoothJointPhys> makeSmoothJoint(const SmoothJointMat& mat, int set, Real r1, Real r2, const Vector3r& branch, Real meanRotation);
+	shared_ptr<SmoothJointPhys> makeSmoothJoint(const SmoothJointMat& mat, int set, const ScGeom& geom, const Vector3r& branch, Real rockTurn);
 } // namespace toppling
 
 } // namespace yade

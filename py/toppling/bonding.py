@@ -38,6 +38,25 @@ def pairs_within_gap(gap: float, ids: Optional[Sequence[int]] = None) -> Iterato
                             yield i, j
 
 
+def remove_floaters(gap: float = 0.0, min_neighbours: int = 2, ids: Optional[Sequence[int]] = None) -> list[int]:
+    """Delete discs (among ``ids``) with fewer than ``min_neighbours`` others within ``gap`` [m].
+
+    Such discs would be loose in the bonded rock (Potyondy & Cundall 2004 eliminate these
+    "floaters"): a disc with no bond rattles in its pore and, on a joint, wedges the blocks
+    apart; with one bond it swings about it. Returns the ids removed.
+    """
+    if min_neighbours < 0:
+        raise ValueError(f"min_neighbours = {min_neighbours} is invalid: it must be >= 0")
+    count = defaultdict(int)
+    for i, j in pairs_within_gap(gap, ids):
+        count[i] += 1
+        count[j] += 1
+    floaters = [i for i in _sphere_ids(ids) if count[i] < min_neighbours]
+    for i in floaters:
+        O.bodies.erase(i)
+    return floaters
+
+
 def bond_within_gap(gap: float = 0.0, ids: Optional[Sequence[int]] = None) -> int:
     """Bond every pair of discs (among ``ids``, default all) within ``gap`` [m].
 
@@ -56,7 +75,7 @@ def bond_within_gap(gap: float = 0.0, ids: Optional[Sequence[int]] = None) -> in
         if interaction is None:
             interaction = utils.createInteraction(i, j)
         if interaction.phys.bondState != 1:
-            interaction.phys.installBond(interaction.geom.penetrationDepth)
+            interaction.phys.installBond(interaction.geom.penetrationDepth, interaction.geom.normal)
             count += 1
     limit_timestep()
     return count

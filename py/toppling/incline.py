@@ -26,6 +26,9 @@ class BlockOnBase:
     h: float
 
 
+BOND_GAP = 0.05  # x Rmin
+
+
 def build(b: float, h: float, rmin: float, rmax: float, rock: dict, joint_friction_deg: float,
           smooth: bool = True, porosity: float = 0.2, seed: int = 1) -> BlockOnBase:
     """Pack, bond (unbreakable bonds) and joint a b x h block on a base; gravity vertical.
@@ -42,7 +45,9 @@ def build(b: float, h: float, rmin: float, rmax: float, rock: dict, joint_fricti
     base = [O.bodies.append(scene.disc((x, y), r, mat, fixed=True)) for x, y, r in discs if y < 0]
     block = [O.bodies.append(scene.disc((x, y), r, mat)) for x, y, r in discs if y >= 0]
     O.engines = scene.engines(gravity=(0, -G, 0), local_damping=0.0)
-    bonding.bond_within_gap(0.05 * rmin)
+    floaters = set(bonding.remove_floaters(BOND_GAP * rmin, ids=block))
+    block = [i for i in block if i not in floaters]
+    bonding.bond_within_gap(BOND_GAP * rmin)
     interface, box = JointSetGeometry(origin=(0, 0), dip=0), ((-1, -1), (width + 1, h + 1))
     if smooth:
         stiffness = mat.bondYoung / (2 * rmin)

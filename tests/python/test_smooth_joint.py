@@ -1,9 +1,10 @@
 """A bonded block on a fixed slab across a smooth joint: sliding against closed forms."""
 import math
 
+import numpy
 import pytest
 from lattice import R, material
-from yade import O
+from yade import O, Quaternion
 from yade.wrapper import JointSetGeometry, SmoothJointMat
 
 from toppling import bonding, joints, scene
@@ -47,14 +48,19 @@ def tilt(alpha_deg: float) -> None:
     O.engines[-1].damping = 0.0
 
 
-def mean_x_velocity(ids) -> float:
-    return sum(O.bodies[i].state.vel[0] for i in ids) / len(ids)
+def mean_x(ids) -> float:
+    return sum(O.bodies[i].state.pos[0] for i in ids) / len(ids)
 
 
-def acceleration(ids, steps=4000) -> float:
-    v0, t0 = mean_x_velocity(ids), O.time
-    O.run(steps, True)
-    return (mean_x_velocity(ids) - v0) / (O.time - t0)
+def acceleration(ids, steps=4000, samples=40) -> float:
+    """Least-squares parabola through the block's mean x: the undamped block rings on its joint
+    springs, so a velocity difference between two instants would measure the ringing too."""
+    times, xs = [], []
+    for _ in range(samples):
+        O.run(steps // samples, True)
+        times.append(O.time)
+        xs.append(mean_x(ids))
+    return 2 * numpy.polyfit(times, xs, 2)[0]
 
 
 def test_joint_pairs_lose_their_bonds(empty_scene):
@@ -77,7 +83,7 @@ def test_without_smooth_joint_coarse_discs_interlock(empty_scene):
 def test_frictionless_joint_slides_at_g_sin_alpha(empty_scene):
     block, _ = block_on_slab(friction_deg=0)
     tilt(26)
-    assert acceleration(block) == pytest.approx(G * math.sin(math.radians(26)), rel=0.02)
+    assert acceleration(block) == pytest.approx(G * math.sin(math.radians(26)), rel=0.005)
 
 
 @pytest.mark.parametrize("phi", [20.0, 30.0])
@@ -91,7 +97,7 @@ def test_friction_holds_below_and_slides_above_friction_angle(empty_scene, phi):
     tilt(phi + 4)
     a = math.radians(phi + 4)
     expected = G * (math.sin(a) - math.tan(math.radians(phi)) * math.cos(a))
-    assert acceleration(block) == pytest.approx(expected, rel=0.05)
+    assert acceleration(block) == pytest.approx(expected, rel=0.005)
 
 
 def test_joint_normal_turns_with_rotating_blocks(empty_scene):
@@ -117,3 +123,30 @@ def test_joint_normal_turns_with_rotating_blocks(empty_scene):
         assert phys.jointNormal[0] == pytest.approx(-math.sin(turn), abs=2e-3)
         assert phys.jointNormal[1] == pytest.approx(math.cos(turn), abs=2e-3)
         assert phys.jointNormalForce == pytest.approx(f0, abs=0.02 * max(abs(f) for f in forces_before))
+
+
+def test_joint_normal_ignores_the_spin_of_a_single_disc(empty_scene):
+    # A disc's own orientation is not the rock's: spinning the two discs of a joint pair in place
+    # (bonds unturned) must leave the joint normal alone; a disc loose in a pore spins freely.
+    block, system = block_on_slab(friction_deg=20)
+    i, j = system.pairId1[0], system.pairId2[0]
+    for k in (i, j):
+        O.bodies[k].state.ori = Quaternion((0, 0, 1), 1.0)
+    O.step()
+    assert O.interactions[i, j].phys.jointNormal[1] == pytest.approx(1.0, abs=1e-6)
+
+
+def test_block_slides_diameters_with_load_passing_from_pair_to_pair(empty_scene):
+    # Large displacement: after sliding several disc diameters, every joint contact still joins
+    # discs that touch (pairs that slid apart ended, new ones formed as smooth joints), and the
+    # block keeps the closed-form acceleration g (sin a - tan phi cos a).
+    block, _ = block_on_slab(friction_deg=10)
+    tilt(20)
+    start = mean_x(block)
+    a = math.radians(20)
+    expected = G * (math.sin(a) - math.tan(math.radians(10)) * math.cos(a))
+    assert acceleration(block, steps=64000) == pytest.approx(expected, rel=0.005)
+    assert mean_x(block) - start > 8 * R
+    joint_contacts = [I for I in O.interactions if type(I.phys).__name__ == "SmoothJointPhys"]
+    assert 0 < len(joint_contacts) <= 2 * 8
+    assert min(I.geom.penetrationDepth for I in joint_contacts) > -0.05 * R
