@@ -221,14 +221,17 @@ Real Law2_ScGeom_ParallelBondPhys_ParallelBond::criticalTimeStep() const
 	std::vector<Real> translational(sc.bodies->size(), 0), rotational(sc.bodies->size(), 0);
 	for (const auto& I : *sc.interactions) {
 		if (!I->isReal()) continue;
-		const auto* phys = dynamic_cast<const ParallelBondPhys*>(I->phys.get());
+		// bonds and smooth joints alike (both are stress-free when installed)
+		const auto* phys = dynamic_cast<const NormShearPhys*>(I->phys.get());
 		const auto* geom = dynamic_cast<const GenericSpheresContact*>(I->geom.get());
 		if (!phys || !geom) continue;
-		const Real k = math::max(phys->kn, phys->ks);
+		const auto* bond = dynamic_cast<const ParallelBondPhys*>(phys);
+		const Real  kr   = bond ? bond->kr : 0;
+		const Real  k    = math::max(phys->kn, phys->ks);
 		translational[I->getId1()] += k;
 		translational[I->getId2()] += k;
-		rotational[I->getId1()] += phys->kr + phys->ks * math::pow(geom->refR1, 2);
-		rotational[I->getId2()] += phys->kr + phys->ks * math::pow(geom->refR2, 2);
+		rotational[I->getId1()] += kr + phys->ks * math::pow(geom->refR1, 2);
+		rotational[I->getId2()] += kr + phys->ks * math::pow(geom->refR2, 2);
 	}
 	Real dt2 = std::numeric_limits<Real>::infinity(); // squared
 	for (const auto& b : *sc.bodies) {

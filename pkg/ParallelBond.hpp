@@ -138,7 +138,7 @@ public:
 		.def("elasticEnergy", &Law2_ScGeom_ParallelBondPhys_ParallelBond::elasticEnergy,
 			"Elastic energy in all contacts and bonds of this law [J].")
 		.def("criticalTimeStep", &Law2_ScGeom_ParallelBondPhys_ParallelBond::criticalTimeStep,
-			"Critical time step from the stiffness of every contact and bond, loaded or not [s]: "
+			"Critical time step from the stiffness of every contact, bond and smooth joint, loaded or not [s]: "
 			":yref:`GlobalStiffnessTimeStepper`'s estimate (safety 1), which skips interactions carrying no force "
 			"and so misses freshly installed, stress-free bonds. ``toppling.bonding`` uses it after bonding.")
 		.def("countBonds", &Law2_ScGeom_ParallelBondPhys_ParallelBond::countBonds, (boost::python::arg("state") = 1),

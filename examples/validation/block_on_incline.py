@@ -49,8 +49,7 @@ def failed(record):
 while O.time < table.duration and not (history and failed(history[-1])):
     O.run(200, True)
     history.append((O.time, incline.toe_translation(setup, x_start), incline.rotation_deg(setup.block)))
-    if scene.bond_law().unstable:
-        raise RuntimeError("the run went unstable")
+    scene.check_stable()
 
 _, translation, rotation = history[-1]
 slides, topples = translation > 0.1 * table.b, abs(rotation) > 5.0

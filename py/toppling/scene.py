@@ -102,3 +102,12 @@ def functor(cls, dispatcher: str = "lawDispatcher"):
 def bond_law() -> Law2_ScGeom_ParallelBondPhys_ParallelBond:
     """The scene's parallel-bond Law2 functor (holds the break records)."""
     return functor(Law2_ScGeom_ParallelBondPhys_ParallelBond)
+
+
+def check_stable(what: str = "the run") -> None:
+    """Raise RuntimeError if a law stopped the run as unstable (a pair moved more than R/10 in
+    one step or a force was not finite; the law printed which pair)."""
+    for cls in (Law2_ScGeom_ParallelBondPhys_ParallelBond, Law2_ScGeom_SmoothJointPhys_SmoothJoint):
+        if functor(cls).unstable:
+            raise RuntimeError(f"{what} went unstable: lower the time-step safety (scene.engines(safety=...)) "
+                               "or raise the damping")

@@ -1,0 +1,243 @@
+"""Tilting-table tests of Amini et al. (2015), thesis §5.2: block-flexural toppling of columns.
+
+Reconstruction (the thesis' Figs 5-3...5-6 are not in its text), in the table frame (table
+surface y = 0, columns standing along +y, the toe at the right, the slope to the left):
+
+* Columns of 5 cm wide blocks (10 x 5 x 4.7 cm: 10 cm along the column, 4.7 cm the disc
+  thickness t) standing upright on the table. Upright, because §5.3.1 says the ideal model
+  tilted by its failure angle 35 deg is the equivalent slope with joints dipping delta = 55 deg
+  = 90 - 35 into the slope.
+* The same rotation fixes the outline: the face is at theta = 98 deg after tilting, i.e. the
+  column tops rise from the toe into the slope at 98 - 35 - 90 + 180 - 180 = 47 deg to the
+  table (the face line runs at 133 deg in the table frame), and the upper surface at
+  beta = 8 deg after tilting falls away from the crest into the slope at 35 - 8 = 27 deg to the
+  table. The crest is where the tilted model is H = 47.39 cm high (Table 5-2), 35.0 cm above
+  the table. The number of columns then follows from the size of the model: 6270 discs of
+  R 1-4 mm at porosity 0.12 cover 0.157 m2, which the outline reaches with 14.6 columns -> 15
+  columns (0.75 m), the back column 14.4 cm high. The thesis' monitoring points go up to
+  column O-15, which agrees.
+* Rectangular blocks have flat tops: each column's top is at the outline's height at the
+  column centre (a stepped face).
+* Main joints between all columns (Table 5-3 "joint"). Cross joints ("base joints", Table 5-3)
+  every 10 cm (the block length): ideal arrangement, in every other column starting at the
+  toe (blocky potential) while the columns between are continuous (flexural potential, §5.2.4.1);
+  random arrangement, in every column at a random offset (seeded), i.e. blocks stacked with
+  random staggering.
+* Micro-parameters: Tables 5-2 and 5-3, except the porosity (0.18: the packer does not lock in
+  overlap, see README) and what the calibration below changes.
+
+Loading: the discs within Rmax of the table are fixed in x and y (§5.2.4.2); gravity is turned
+by the tilt (Fig 5-7), `start_tilt` first, then `step` degrees per stage. Each stage runs in
+chunks of `chunk` seconds with local damping `damping` until
+
+* equilibrium: the fastest column top moves slower than `rest_speed`, or
+* failure: a column top has moved more than `fail_displacement` since the last equilibrium
+  (10 % of the column width by default: a column has clearly toppled or slid), or it is still
+  moving faster than `rest_speed` after `max_stage_time`.
+
+The failure tilt is the first stage that fails. The run then goes on for `post_failure_time`
+so the failure surface develops, and toppling.analysis finds it (failure points of the
+columns, fitted surface(s), phi), the zones, S/H and T/H, from the displacements since the last
+equilibrium and the cracks.
+
+    ./yade -x -j2 -n examples/tilting_table.py
+    ./yade-batch -j1 --log='results/batch/@.log' examples/tilting_table.table examples/tilting_table.py
+"""
+import math
+
+import numpy as np
+from yade import O, utils
+from yade.utils import readParamsFromTable
+from yade.wrapper import ParallelBondMat, SmoothJointMat
+
+from toppling import (analysis, bonding, boundary, columns, geometry, joints, monitor, output, packing, paraview,
+                      plots, scene, tilting)
+
+readParamsFromTable(arrangement="ideal", rmin=1e-3, rmax=4e-3, porosity=0.18, seed=1, start_tilt=20.0, step=1.0,
+                    max_tilt=45.0, damping=0.7, chunk=0.02, rest_speed=1e-3, fail_displacement=5e-3,
+                    max_stage_time=0.4, post_failure_time=0.3, resume=0, out="results/tilting_table", noTableOk=True)
+from yade.params import table  # noqa: E402  (filled by readParamsFromTable)
+
+WIDTH, BLOCK_LENGTH, T, COLUMNS = 0.05, 0.10, 0.047, 15
+FACE_DEG, TOP_DEG, CREST = 47.0, 27.0, 0.350  # to the table; crest height [m] (see above)
+TABLE_5_2 = {  # what differs between the two models
+    "ideal": dict(young=15.05e6, knKs=1.3, bondTensileStrength=209e3),
+    "random": dict(young=15.9e6, knKs=1.8, bondTensileStrength=159e3),
+}
+COMMON = dict(density=2900.0, frictionAngle=math.atan(0.45), bondYoung=15.9e6, bondKnKs=1.8, bondCohesion=50e3,
+              bondFrictionAngle=math.radians(15), bondNormalDamping=0.2, normalDamping=0.13, thickness=T)
+BOND_GAP = 1.05e-3  # Table 5-2 [m]
+TABLE_5_3 = {  # main joints (kn = ks [N/m3], mu), base joints (kn = ks, mu), gap [m]
+    "ideal": ((12e11, 0.17), (12e10, 0.23), 1e-4),
+    "random": ((12e11, 0.15), (12e10, 0.20), 1e-4),
+}
+THESIS = {"ideal": dict(failure_tilt_deg=35, phi_deg=[15]), "random": dict(failure_tilt_deg=19, phi_deg=[14, 24])}
+
+if table.arrangement not in TABLE_5_2:
+    raise ValueError(f"arrangement = {table.arrangement!r} is invalid: it must be 'ideal' or 'random'")
+criteria = tilting.StageCriteria(table.chunk, table.rest_speed, table.fail_displacement, table.max_stage_time)
+
+
+def profile(d: float) -> float:
+    """Height of the outline at distance d from the toe."""
+    crest_distance = CREST / math.tan(math.radians(FACE_DEG))
+    if d <= crest_distance:
+        return d * math.tan(math.radians(FACE_DEG))
+    return CREST - (d - crest_distance) * math.tan(math.radians(TOP_DEG))
+
+
+def cross_joint_columns(layout: columns.ColumnLayout) -> tuple[list[int], list[float]]:
+    if table.arrangement == "ideal":
+        blocky = list(range(1, layout.count + 1, 2))
+        return blocky, [0.0] * len(blocky)
+    every = list(range(1, layout.count + 1))
+    return every, list(np.random.default_rng(table.seed).uniform(0, BLOCK_LENGTH, len(every)))
+
+
+def build() -> columns.ColumnLayout:
+    layout = columns.ColumnLayout.under_profile(COLUMNS * WIDTH, WIDTH, COLUMNS, profile)
+    rock = ParallelBondMat(**COMMON, **TABLE_5_2[table.arrangement])
+    discs = packing.pack_polygon(geometry.region(layout.section()), table.rmin, table.rmax, table.porosity,
+                                 seed=table.seed).discs
+    ids = scene.add_discs(discs, rock)
+    O.engines = scene.engines(gravity=(0, -tilting.G, 0), local_damping=table.damping)
+    floaters = set(bonding.remove_floaters(BOND_GAP, ids=ids))
+    ids = [i for i in ids if i not in floaters]
+    boundary.fix(boundary.near([((0, 0), (layout.toe_x, 0))], table.rmax, ids), "xy")
+    O.run(2000, True)  # settle under gravity before bonding (thesis §5.3.2)
+    bonding.bond_within_gap(BOND_GAP, ids)
+    (kn_main, mu_main), (kn_base, mu_base), gap = TABLE_5_3[table.arrangement]
+    main = SmoothJointMat(normal=(1, 0, 0), normalStiffness=kn_main, shearStiffness=kn_main,
+                          frictionAngle=math.atan(mu_main), gap=gap, thickness=T)
+    base = SmoothJointMat(normal=(0, 1, 0), normalStiffness=kn_base, shearStiffness=kn_base,
+                          frictionAngle=math.atan(mu_base), gap=gap, thickness=T)
+    blocky, phases = cross_joint_columns(layout)
+    joints.install_joints([(layout.main_joints(), main), (layout.cross_joints(blocky, BLOCK_LENGTH, phases), base)],
+                          lo=(-1, -1), hi=(layout.toe_x + 1, 1))
+    return layout
+
+
+def column_tops(layout: columns.ColumnLayout) -> list[int]:
+    """The disc nearest the top centre of each column: its monitoring point."""
+    tops = []
+    for k in range(1, layout.count + 1):
+        c = np.array(layout.top_centre(k))
+        members = [b.id for b in O.bodies if b is not None and layout.column_of(b.state.pos[0]) == k]
+        tops.append(min(members, key=lambda i: np.linalg.norm(np.array(tuple(O.bodies[i].state.pos)[:2]) - c)))
+    return tops
+
+
+# ---- build or resume ----
+checkpoint = monitor.Checkpoint(table.out)
+if table.resume:
+    state = checkpoint.load()
+    layout = columns.ColumnLayout(**state["layout"])
+    points = monitor.MonitoringPoints.from_dict(state["points"])
+else:
+    layout = build()
+    tops = column_tops(layout)
+    ids = [b.id for b in O.bodies if b is not None]
+    points = monitor.MonitoringPoints([analysis.column_label(k) for k in range(1, layout.count + 1)], tops)
+    state = {"layout": vars(layout), "ids": ids, "tilt": table.start_tilt, "failure_tilt": None,
+             "reference": tilting.positions(ids).tolist(), "stages": [], "energy": []}
+ids, tops = state["ids"], points.ids
+series = paraview.ParaViewSeries(f"{table.out}/paraview", joints.rock_functor().joints.blockOfBody)
+progress = monitor.Progress()
+
+
+def on_chunk() -> None:
+    points.record()
+    state["energy"].append((O.time, state["tilt"], utils.kineticEnergy()))
+    span = table.max_tilt - table.start_tilt
+    progress(f"tilt {state['tilt']:.1f} deg", (state["tilt"] - table.start_tilt) / span if span > 0 else None)
+
+
+# ---- tilt in stages until a stage fails ----
+while state["failure_tilt"] is None and state["tilt"] <= table.max_tilt + 1e-9:
+    outcome = tilting.run_stage(state["tilt"], tops, tilting.positions(tops), criteria, on_chunk)
+    state["stages"].append({"tilt": state["tilt"], "outcome": outcome, "time": O.time, "steps": O.iter})
+    print(f"tilt {state['tilt']:.1f} deg: {outcome}", flush=True)
+    series.snapshot()
+    if outcome == "failed":
+        state["failure_tilt"] = state["tilt"]
+    else:
+        state["reference"] = tilting.positions(ids).tolist()
+        state["tilt"] += table.step
+    state["points"] = points.as_dict()
+    checkpoint.save(state)
+
+if state["failure_tilt"] is None:
+    raise RuntimeError(f"no failure up to max_tilt = {table.max_tilt} deg: raise max_tilt")
+if not state.get("post_failure_done"):
+    O.run(max(1, int(table.post_failure_time / O.dt)), True)  # let the failure surface develop
+    scene.check_stable("the post-failure run")
+    on_chunk()
+    series.snapshot()
+    state["post_failure_done"] = True
+    state["points"] = points.as_dict()
+    checkpoint.save(state)
+
+
+# ---- analysis (slope frame: x normal to the columns towards the face, y up the columns) ----
+def analyse() -> dict:
+    alpha = math.radians(state["failure_tilt"])
+    reference = np.array(state["reference"])
+    now = tilting.positions(ids)
+    toe = (layout.toe_x, 0.0)
+    pos_local = analysis.slope_frame(reference, toe, 90)
+    disp = now - reference  # the slope frame is the table frame shifted: same components
+    law = scene.bond_law()
+    cracks = analysis.slope_frame(np.array([tuple(p)[:2] for p in law.breakPosition]).reshape(-1, 2), toe, 90)
+    column = np.array([layout.column_of(x) for x in reference[:, 0]])
+    top_index = [ids.index(i) for i in tops]
+    top_disp = np.linalg.norm(disp[top_index], axis=1)
+    threshold = max(0.2 * top_disp.max(), 1e-4)
+    speeds = [abs(points.total(label)[-1] - points.total(label)[-2]) / table.chunk if len(points.time) > 1 else 0.0
+              for label in points.labels]
+    zones, failure_points = [], []
+    for k in range(1, layout.count + 1):
+        members = column == k
+        point = analysis.failure_point(pos_local[members], disp[members], threshold, cracks, band=2 * table.rmax)
+        base = 0.0
+        if point:
+            near_cut = members & (np.abs(pos_local[:, 1] - point[1]) < 2 * table.rmax)
+            base = float(np.linalg.norm(disp[near_cut], axis=1).mean()) if near_cut.any() else 0.0
+        zone = analysis.zone(top_disp[k - 1], speeds[k - 1] > table.rest_speed, top_disp[k - 1], base, still=threshold / 10)
+        zones.append(zone)
+        if point and zone in ("toppling", "sliding"):
+            failure_points.append(point)
+    planes = analysis.fit_failure_surface(failure_points) if len(failure_points) >= 2 else []
+    # horizontal distance (tilted table) from the toe to each column's far top corner; slope height
+    far_edges = [k * WIDTH * math.cos(alpha) - layout.heights[k - 1] * math.sin(alpha)
+                 for k in range(1, layout.count + 1)]
+    height = max(-math.sin(alpha) * (x - layout.toe_x) + math.cos(alpha) * y for x, y in layout.section())
+    return {"planes": planes, "failure_points": failure_points, "zones": zones, "height": height,
+            **analysis.zone_distances(zones, far_edges, height), "disp": disp, "now": now}
+
+
+result = analyse()
+law = scene.bond_law()
+summary = dict(
+    failure_tilt_deg=state["failure_tilt"], phi_deg=[p.phi_deg for p in result["planes"]],
+    planes=len(result["planes"]), s_over_h=result["s_over_h"], t_over_h=result["t_over_h"],
+    zones={analysis.column_label(k + 1): z for k, z in enumerate(result["zones"])},
+    failure_points=result["failure_points"], slope_height=result["height"], thesis=THESIS[table.arrangement],
+    tensile_breaks=law.breakMode.count(2), shear_breaks=law.breakMode.count(3), discs=len(ids),
+    stages=state["stages"], steps=O.iter, simulated_time=O.time, wall_time=progress.wall_time)
+output.write_summary(table.out, output.table_inputs(table), **summary)
+
+radii = [O.bodies[i].shape.radius for i in ids]
+cracks = np.array([tuple(p)[:2] for p in law.breakPosition]).reshape(-1, 2)
+plots.slope(table.out, "slope_before", np.array(state["reference"]), radii, np.zeros((len(ids), 2)), [], [],
+            title=f"{table.arrangement} arrangement at the last equilibrium")
+plots.slope(table.out, "slope_after", result["now"], radii, result["disp"], cracks, list(law.breakMode),
+            result["planes"], toe=(layout.toe_x, 0.0),
+            title=f"{table.arrangement}: failed at {state['failure_tilt']:.1f} deg, "
+                  f"phi = {', '.join(f'{p:.1f}' for p in summary['phi_deg'])} deg")
+plots.tilt_history(table.out, state["energy"], points, state["failure_tilt"])
+plots.monitoring(table.out, points, points.labels[::2])
+print(f"{table.arrangement}: failure tilt {state['failure_tilt']:.1f} deg (thesis "
+      f"{THESIS[table.arrangement]['failure_tilt_deg']}), phi {summary['phi_deg']} (thesis "
+      f"{THESIS[table.arrangement]['phi_deg']}), S/H {summary['s_over_h']}, T/H {summary['t_over_h']}, "
+      f"{summary['tensile_breaks']} tensile / {summary['shear_breaks']} shear breaks, {len(ids)} discs, "
+      f"{summary['wall_time']:.0f} s")

@@ -1,0 +1,137 @@
+"""Automatic failure analysis of a toppling slope: failure surface, zones, S/H and T/H.
+
+Pure numpy on arrays, so it is unit-tested with synthetic fields. Everything is in the
+*slope frame*: x along the normal to the main joints, pointing out of the slope (towards the
+face), y along the main joints, pointing up; columns (bands between main joints) are numbered
+1, 2, ... from the toe into the slope. ``slope_frame`` maps scene coordinates into it.
+
+Definitions (thesis §5.2.4.3, §5.3.3.2; its Fig 5-24 is not in the text, so S and T are our
+reading of it):
+
+* failure point of a column: the height (y) where the column's discs change from "not
+  moved" below to "moved" above (a step fitted to the displacement magnitudes), moved to the
+  median of the cracks (broken bonds) within ``band`` of it when there are any;
+* failure surface: a line fitted through the columns' failure points; two lines (split at
+  the best break point, each through >= 3 points) when that lowers the squared residual by
+  ``split_gain`` and the two angles differ by >= ``min_angle_difference``; phi is the angle
+  of a line to the normal of the main joints, positive rising into the slope;
+* zones per column, from its top point: ``no-movement`` (total displacement below
+  ``still``), ``stable`` (moved, but came to rest), ``toppling`` (still moving, the top moving
+  more than twice as much as the base), ``sliding`` (still moving, base moving with the top);
+* T: horizontal distance from the toe to the far edge of the last toppling or sliding column;
+  S: the same to the far edge of the last column that moved at all (start of no-movement).
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Optional, Sequence
+
+import numpy as np
+
+ZONES = ("no-movement", "stable", "toppling", "sliding")
+
+
+def slope_frame(points: np.ndarray, toe: Sequence[float], joint_dip_deg: float) -> np.ndarray:
+    """Scene xy-points into the slope frame, origin at the toe: y along the main joints, whose
+    direction is ``joint_dip_deg`` (degrees counter-clockwise from +x, pointing up), x that
+    direction turned 90 degrees clockwise (towards the face when the slope lies to the left
+    of the face, as in all our scenes)."""
+    a = math.radians(joint_dip_deg)
+    along = np.array([math.cos(a), math.sin(a)])
+    normal = np.array([along[1], -along[0]])
+    d = np.asarray(points, dtype=float)[:, :2] - np.asarray(toe, dtype=float)[:2]
+    return np.column_stack((d @ normal, d @ along))
+
+
+def rotation_deg(before: np.ndarray, after: np.ndarray) -> float:
+    """Best-fit rigid rotation (degrees, counter-clockwise) taking points ``before`` to ``after``."""
+    p = before - before.mean(axis=0)
+    q = after - after.mean(axis=0)
+    return math.degrees(math.atan2(np.sum(p[:, 0] * q[:, 1] - p[:, 1] * q[:, 0]), np.sum(p * q)))
+
+
+def failure_point(pos: np.ndarray, disp: np.ndarray, moved_threshold: float,
+                  cracks: Optional[np.ndarray] = None, band: float = 0.0) -> Optional[tuple[float, float]]:
+    """(x, y) where a column's discs (positions ``pos`` before, displacements ``disp``) change
+    from unmoved below to moved above; None if none moved. ``cracks``: crack positions."""
+    moved = np.linalg.norm(disp, axis=1) > moved_threshold
+    if not moved.any():
+        return None
+    order = np.argsort(pos[:, 1])
+    y, m = pos[order, 1], moved[order]
+    # agreement of a cut before index k: unmoved below it + moved from it on
+    below_unmoved = np.concatenate(([0], np.cumsum(~m)))
+    above_moved = np.concatenate((np.cumsum(m[::-1])[::-1], [0]))
+    k = int(np.argmax(below_unmoved + above_moved))
+    cut = y[0] if k == 0 else (y[-1] if k == len(y) else 0.5 * (y[k - 1] + y[k]))
+    if cracks is not None and len(cracks) and band > 0:
+        x_lo, x_hi = pos[:, 0].min(), pos[:, 0].max()
+        near = cracks[(cracks[:, 0] >= x_lo) & (cracks[:, 0] <= x_hi) & (np.abs(cracks[:, 1] - cut) <= band)]
+        if len(near):
+            cut = float(np.median(near[:, 1]))
+    return float(pos[:, 0].mean()), float(cut)
+
+
+@dataclass
+class Plane:
+    phi_deg: float  # angle to the normal of the main joints, positive rising into the slope
+    slope: float  # dy/dx in the slope frame
+    intercept: float  # y at x = 0 (the toe)
+    x_range: tuple[float, float]
+
+
+def _line(x: np.ndarray, y: np.ndarray) -> tuple[Plane, float]:
+    slope, intercept = np.polyfit(x, y, 1)
+    sse = float(np.sum((y - (slope * x + intercept)) ** 2))
+    return Plane(math.degrees(math.atan(-slope)), float(slope), float(intercept), (float(x.min()), float(x.max()))), sse
+
+
+def fit_failure_surface(points: Sequence[tuple[float, float]], split_gain: float = 4.0,
+                        min_angle_difference: float = 5.0) -> list[Plane]:
+    """One or two lines through the failure points, ordered from the toe into the slope."""
+    if len(points) < 2:
+        raise ValueError(f"{len(points)} failure points: a failure surface needs at least 2")
+    p = np.array(sorted(points, key=lambda q: -q[0]))  # toe first (largest x)
+    one, sse1 = _line(p[:, 0], p[:, 1])
+    best = None
+    for k in range(3, len(p) - 2):  # each part through >= 3 points
+        a, sse_a = _line(p[:k, 0], p[:k, 1])
+        b, sse_b = _line(p[k:, 0], p[k:, 1])
+        if best is None or sse_a + sse_b < best[2]:
+            best = (a, b, sse_a + sse_b)
+    if best and best[2] * split_gain < sse1 and abs(best[0].phi_deg - best[1].phi_deg) >= min_angle_difference:
+        return [best[0], best[1]]
+    return [one]
+
+
+def zone(total_displacement: float, still_moving: bool, top_displacement: float, base_displacement: float,
+         still: float) -> str:
+    """Zone of one column (see the module's definitions)."""
+    if total_displacement < still:
+        return "no-movement"
+    if not still_moving:
+        return "stable"
+    return "toppling" if top_displacement > 2 * base_displacement else "sliding"
+
+
+def zone_distances(zones: Sequence[str], far_edges: Sequence[float], height: float) -> dict[str, Optional[float]]:
+    """T/H and S/H from the zones of columns 1, 2, ... (toe first) and the horizontal distance
+    from the toe to each column's far edge; None where the zone does not occur."""
+    if height <= 0:
+        raise ValueError(f"height = {height} is invalid: it must be > 0 m")
+    failing = [d for z, d in zip(zones, far_edges) if z in ("toppling", "sliding")]
+    moved = [d for z, d in zip(zones, far_edges) if z != "no-movement"]
+    return {"t_over_h": max(failing) / height if failing else None,
+            "s_over_h": max(moved) / height if moved else None}
+
+
+def column_label(k: int) -> str:
+    """Thesis label of column k (1-based, from the toe): A-1, B-2, ..., Z-26, AA-27, ..."""
+    if k < 1:
+        raise ValueError(f"column = {k} is invalid: it must be >= 1")
+    letters, n = "", k
+    while n:
+        n, r = divmod(n - 1, 26)
+        letters = chr(ord("A") + r) + letters
+    return f"{letters}-{k}"

@@ -1,0 +1,98 @@
+"""Long runs: a progress line on the console, checkpoints that resume, monitoring points."""
+from __future__ import annotations
+
+import json
+import os
+import time
+from typing import Any, Optional, Sequence
+
+from yade import O, utils
+
+from toppling import scene
+
+
+class Progress:
+    """Prints ``label, step, simulated time, kinetic energy, broken bonds, ETA`` at most every
+    ``every`` wall seconds; ETA from the fraction of the work done that the caller passes."""
+
+    def __init__(self, every: float = 10.0):
+        self.every = every
+        self.start = time.time()
+        self.last = -float("inf")
+
+    def __call__(self, label: str, fraction_done: Optional[float] = None, force: bool = False) -> None:
+        now = time.time()
+        if not force and now - self.last < self.every:
+            return
+        self.last = now
+        elapsed = now - self.start
+        eta = "?"
+        if fraction_done and fraction_done > 0:
+            eta = f"{elapsed * (1 - fraction_done) / fraction_done:.0f} s"
+        print(f"[{elapsed:7.0f} s] {label}  step {O.iter}  t = {O.time:.4f} s  "
+              f"Ek = {utils.kineticEnergy():.3e} J  broken bonds {len(scene.bond_law().breakMode)}  ETA {eta}",
+              flush=True)
+
+    @property
+    def wall_time(self) -> float:
+        return time.time() - self.start
+
+
+class Checkpoint:
+    """``<folder>/checkpoint.yade.bz2`` (the scene, by ``O.save``) + ``checkpoint.json`` (the
+    driver's own state: where in its loop it was)."""
+
+    def __init__(self, folder: str):
+        os.makedirs(folder, exist_ok=True)
+        self.scene_path = os.path.join(folder, "checkpoint.yade.bz2")
+        self.state_path = os.path.join(folder, "checkpoint.json")
+
+    def exists(self) -> bool:
+        return os.path.exists(self.scene_path) and os.path.exists(self.state_path)
+
+    def save(self, state: dict[str, Any]) -> None:
+        O.save(self.scene_path)
+        tmp = self.state_path + ".tmp"
+        with open(tmp, "w") as f:
+            json.dump(state, f)
+        os.replace(tmp, self.state_path)  # never a half-written state next to a new scene
+
+    def load(self) -> dict[str, Any]:
+        if not self.exists():
+            raise FileNotFoundError(f"no checkpoint in {os.path.dirname(self.scene_path)}: run without resume first")
+        O.load(self.scene_path)
+        with open(self.state_path) as f:
+            return json.load(f)
+
+
+class MonitoringPoints:
+    """Displacement histories (X, Y, total) of labelled discs, e.g. column tops ``G-7``."""
+
+    def __init__(self, labels: Sequence[str], ids: Sequence[int]):
+        self.labels, self.ids = list(labels), list(ids)
+        self.reference = [tuple(O.bodies[i].state.pos) for i in self.ids]
+        self.time: list[float] = []
+        self.x: dict[str, list[float]] = {label: [] for label in self.labels}
+        self.y: dict[str, list[float]] = {label: [] for label in self.labels}
+
+    def record(self) -> None:
+        self.time.append(O.time)
+        for label, i, ref in zip(self.labels, self.ids, self.reference):
+            p = O.bodies[i].state.pos
+            self.x[label].append(p[0] - ref[0])
+            self.y[label].append(p[1] - ref[1])
+
+    def total(self, label: str) -> list[float]:
+        return [(dx * dx + dy * dy) ** 0.5 for dx, dy in zip(self.x[label], self.y[label])]
+
+    def as_dict(self) -> dict[str, Any]:
+        return {"labels": self.labels, "ids": self.ids, "reference": self.reference, "time": self.time,
+                "x": self.x, "y": self.y}
+
+    @classmethod
+    def from_dict(cls, d: dict[str, Any]) -> "MonitoringPoints":
+        points = cls.__new__(cls)
+        points.labels, points.ids = d["labels"], d["ids"]
+        points.reference = [tuple(r) for r in d["reference"]]
+        points.time, points.x, points.y = d["time"], d["x"], d["y"]
+        return points

@@ -1,0 +1,76 @@
+"""PNG figures every slope case writes: the slope coloured by displacement with cracks and the
+fitted failure surface, the loading history, and monitoring-point histories (Fig 5-21 style)."""
+from __future__ import annotations
+
+from typing import Sequence
+
+import numpy as np
+from matplotlib.collections import EllipseCollection
+
+from toppling import output
+from toppling.analysis import Plane
+from toppling.monitor import MonitoringPoints
+
+
+def slope(out: str, name: str, centres: np.ndarray, radii: Sequence[float], displacement: np.ndarray,
+          cracks: np.ndarray, modes: Sequence[int], planes: Sequence[Plane] = (), toe=(0.0, 0.0),
+          title: str = "") -> str:
+    """Discs at ``centres`` coloured by |displacement| [mm], cracks (x tension, + shear) and the
+    failure planes (given in the slope frame of upright columns: x - toe_x, y)."""
+    fig, ax = output.figure("x (m)", "y (m)", title)
+    radii = np.asarray(radii)
+    magnitude = 1e3 * np.linalg.norm(displacement, axis=1)
+    discs = EllipseCollection(2 * radii, 2 * radii, np.zeros_like(radii), units="xy", offsets=centres,
+                              transOffset=ax.transData, array=magnitude, cmap="viridis")
+    ax.add_collection(discs)
+    fig.colorbar(discs, ax=ax, label="displacement (mm)")
+    cracks, modes = np.asarray(cracks).reshape(-1, 2), np.asarray(modes)
+    for mode, marker, colour, label in ((2, "x", "red", "tensile crack"), (3, "+", "blue", "shear crack")):
+        sel = modes == mode
+        if sel.any():
+            ax.plot(cracks[sel, 0], cracks[sel, 1], marker, color=colour, ms=3, ls="none", label=label)
+    for k, plane in enumerate(planes):
+        x = np.array(plane.x_range)
+        ax.plot(toe[0] + x, toe[1] + plane.intercept + plane.slope * x, "k-", lw=2,
+                label=f"failure surface {k + 1}: phi = {plane.phi_deg:.1f} deg")
+    ax.set_aspect("equal")
+    ax.autoscale_view()
+    if len(planes) or len(cracks):
+        ax.legend(loc="upper right", fontsize=7)
+    return output.save_figure(fig, out, name)
+
+
+def tilt_history(out: str, energy: Sequence[tuple[float, float, float]], points: MonitoringPoints,
+                 failure_tilt: float) -> str:
+    """Tilt, largest monitoring-point displacement and kinetic energy against simulated time."""
+    t, tilt, ek = (np.array(c) for c in zip(*energy))
+    fig, ax = output.figure("simulated time (s)", "tilt (deg)", f"Tilting, failure at {failure_tilt:.1f} deg")
+    ax.plot(t, tilt, "k-", label="tilt")
+    right = ax.twinx()
+    right.semilogy(t, np.maximum(ek, 1e-12), "r-", label="kinetic energy (J)")
+    biggest = np.max([points.total(label) for label in points.labels], axis=0)
+    right.semilogy(points.time, np.maximum(1e3 * biggest, 1e-6), "b-", label="largest column-top displacement (mm)")
+    right.legend(loc="upper left", fontsize=7)
+    return output.save_figure(fig, out, "tilt_history")
+
+
+def monitoring(out: str, points: MonitoringPoints, labels: Sequence[str]) -> str:
+    """X, Y, dY/dX and total displacement of the labelled points against time (Fig 5-21)."""
+    import matplotlib.pyplot as plt
+
+    fig, axes = plt.subplots(2, 2, figsize=(10, 7))
+    t = np.array(points.time)
+    for label in labels:
+        x, y = 1e3 * np.array(points.x[label]), 1e3 * np.array(points.y[label])
+        axes[0, 0].plot(t, x, label=label)
+        axes[0, 1].plot(t, y, label=label)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            axes[1, 0].plot(t[1:], np.diff(y) / np.diff(x), label=label)
+        axes[1, 1].plot(t, np.hypot(x, y), label=label)
+    for ax, ylabel in zip(axes.flat, ("X (mm)", "Y (mm)", "dY/dX", "total displacement (mm)")):
+        ax.set_xlabel("simulated time (s)")
+        ax.set_ylabel(ylabel)
+        ax.grid(True, alpha=0.3)
+    axes[1, 0].set_ylim(-5, 5)
+    axes[0, 0].legend(fontsize=7)
+    return output.save_figure(fig, out, "monitoring_points")

@@ -1,0 +1,110 @@
+"""Failure analysis on synthetic displacement fields and crack sets with known answers."""
+import math
+
+import numpy as np
+import pytest
+
+from toppling import analysis
+
+WIDTH = 0.05  # column width [m]
+
+
+def columns_cut_by(surface, n_columns=12, height=0.5, spacing=0.004):
+    """Disc centres of columns 1..n (toe at x = 0, slope towards -x); discs above
+    ``surface(x)`` rotated rigidly about the column's failure point, the rest still."""
+    pos, disp, column = [], [], []
+    for k in range(1, n_columns + 1):
+        xc = -(k - 0.5) * WIDTH
+        cut = surface(xc)
+        for x in np.arange(xc - 0.02, xc + 0.021, spacing):
+            for y in np.arange(0.0, height, spacing):
+                pos.append((x, y))
+                column.append(k)
+                if y > cut:  # topple by 2 degrees about (xc, cut)
+                    a = math.radians(-2)
+                    rx, ry = x - xc, y - cut
+                    disp.append((rx * math.cos(a) - ry * math.sin(a) - rx, rx * math.sin(a) + ry * math.cos(a) - ry))
+                else:
+                    disp.append((0.0, 0.0))
+    return np.array(pos), np.array(disp), np.array(column)
+
+
+def surface_points(pos, disp, column, **kw):
+    points = []
+    for k in sorted(set(column)):
+        sel = column == k
+        p = analysis.failure_point(pos[sel], disp[sel], moved_threshold=1e-5, **kw)
+        if p:
+            points.append(p)
+    return points
+
+
+def test_single_failure_surface_at_15_degrees():
+    tan = math.tan(math.radians(15))
+    pos, disp, column = columns_cut_by(lambda x: 0.02 - tan * x)
+    planes = analysis.fit_failure_surface(surface_points(pos, disp, column))
+    assert len(planes) == 1
+    assert planes[0].phi_deg == pytest.approx(15, abs=0.5)
+
+
+def test_two_failure_surfaces_14_and_24_degrees():
+    t1, t2, xb = math.tan(math.radians(14)), math.tan(math.radians(24)), -6 * WIDTH
+    surface = lambda x: 0.02 - t1 * x if x > xb else 0.02 - t1 * xb - t2 * (x - xb)  # noqa: E731
+    pos, disp, column = columns_cut_by(surface, n_columns=14)
+    planes = analysis.fit_failure_surface(surface_points(pos, disp, column))
+    assert [round(p.phi_deg) for p in planes] == [14, 24]
+
+
+def test_noisy_straight_surface_stays_one_plane():
+    rng = np.random.default_rng(3)
+    x = -np.arange(1, 13) * WIDTH
+    points = list(zip(x, 0.02 - math.tan(math.radians(20)) * x + rng.normal(0, 0.004, len(x))))
+    planes = analysis.fit_failure_surface(points)
+    assert len(planes) == 1
+    assert planes[0].phi_deg == pytest.approx(20, abs=2)
+
+
+def test_cracks_refine_the_failure_point():
+    pos, disp, column = columns_cut_by(lambda x: 0.1, n_columns=1)
+    cracks = np.array([(-0.025, 0.105), (-0.02, 0.103), (-0.03, 0.107), (0.5, 0.3)])  # last: other column
+    x, y = analysis.failure_point(pos, disp, 1e-5, cracks=cracks, band=0.01)
+    assert y == pytest.approx(0.105)
+    assert x == pytest.approx(-0.025, abs=1e-3)
+
+
+def test_unmoved_column_has_no_failure_point():
+    pos = np.array([(0.0, y) for y in np.linspace(0, 0.3, 20)])
+    assert analysis.failure_point(pos, np.zeros_like(pos), 1e-5) is None
+
+
+def test_rotation_of_a_rigidly_turned_point_set():
+    rng = np.random.default_rng(1)
+    p = rng.random((50, 2))
+    a = math.radians(7)
+    q = p @ np.array([[math.cos(a), math.sin(a)], [-math.sin(a), math.cos(a)]]) + (0.3, -0.1)
+    assert analysis.rotation_deg(p, q) == pytest.approx(7)
+
+
+def test_slope_frame_of_tilted_joints():
+    # joints dipping 55 degrees: a point one unit up the joint from the toe is at (0, 1)
+    a = math.radians(55)
+    local = analysis.slope_frame(np.array([(1 + math.cos(a), 2 + math.sin(a))]), (1, 2), 55)
+    assert local[0] == pytest.approx((0, 1))
+
+
+def test_zones_and_normalised_distances():
+    zones = [analysis.zone(*c, still=1e-4) for c in [
+        (0.05, True, 0.05, 0.04),  # toe column slides
+        (0.03, True, 0.03, 0.001),  # topples
+        (0.02, True, 0.02, 0.001),  # topples
+        (0.002, False, 0.002, 0.0),  # moved, at rest
+        (0.0, False, 0.0, 0.0)]]
+    assert zones == ["sliding", "toppling", "toppling", "stable", "no-movement"]
+    d = analysis.zone_distances(zones, far_edges=[0.1, 0.2, 0.3, 0.4, 0.5], height=0.5)
+    assert d == {"t_over_h": pytest.approx(0.6), "s_over_h": pytest.approx(0.8)}
+
+
+def test_column_labels_follow_the_thesis():
+    assert [analysis.column_label(k) for k in (1, 7, 15, 26, 27)] == ["A-1", "G-7", "O-15", "Z-26", "AA-27"]
+    with pytest.raises(ValueError, match="column"):
+        analysis.column_label(0)

@@ -1,0 +1,69 @@
+"""Column layouts of the tilting-table models, staged tilting, checkpoints and monitoring points."""
+import json
+import math
+
+import pytest
+from yade import O
+
+from toppling import columns, incline, monitor, tilting
+
+ROCK = dict(young=15e6, knKs=1.4, density=2340.0, bondYoung=15.9e6, bondKnKs=1.8, normalDamping=0.13,
+            bondNormalDamping=0.2)
+
+
+def test_layout_outline_columns_and_joints():
+    layout = columns.ColumnLayout(toe_x=0.15, width=0.05, heights=[0.1, 0.25, 0.2])
+    assert [c for p in layout.section() for c in p] == pytest.approx([c for p in [(0.0, 0.0), (0.15, 0.0), (0.15, 0.1), (0.1, 0.1), (0.1, 0.25), (0.05, 0.25),
+                                (0.05, 0.2), (0.0, 0.2)] for c in p])
+    assert [layout.column_of(x) for x in (0.14, 0.06, 0.01, 0.2, -0.01)] == [1, 2, 3, 0, 0]
+    assert layout.main_joints().spacing == 0.05
+    cross = layout.cross_joints([1, 2, 3], spacing=0.04, phases=[0.0, 0.0, 0.01])
+    # column 1 stands free downhill: no joints; column 2 leans on column 1 up to 0.1 m; column 3 on 2 up to 0.2 m
+    assert sorted(y for _, y in cross.segmentStarts) == pytest.approx([0.01, 0.04, 0.05, 0.08, 0.09, 0.13, 0.17])
+    with pytest.raises(ValueError, match="width"):
+        columns.ColumnLayout(0.1, 0.0, [0.1])
+    with pytest.raises(ValueError, match="spacing"):
+        layout.cross_joints([2], 0.0, [0.0])
+
+
+def test_profile_layout_has_flat_tops_at_column_centres():
+    layout = columns.ColumnLayout.under_profile(0.1, 0.05, 2, lambda d: 2 * d)
+    assert layout.heights == pytest.approx([0.05, 0.15])
+    assert layout.top_centre(2) == pytest.approx((0.025, 0.15))
+
+
+@pytest.mark.parametrize("tilt, expected", [(16.0, "equilibrium"), (27.0, "failed")])
+def test_stage_ends_in_equilibrium_below_and_fails_above_the_joint_friction(empty_scene, tilt, expected):
+    setup = incline.build(0.1, 0.05, 0.012 / 2.5, 0.012, ROCK, math.degrees(math.atan(0.4)))  # 21.8 deg
+    O.engines[-1].damping = 0.5
+    watched = setup.block
+    criteria = tilting.StageCriteria(chunk=0.02, rest_speed=1e-3, fail_displacement=2e-3, max_stage_time=0.3)
+    assert tilting.run_stage(tilt, watched, tilting.positions(watched), criteria) == expected
+
+
+def test_checkpoint_resumes_scene_and_driver_state(empty_scene, tmp_path):
+    setup = incline.build(0.1, 0.05, 0.012 / 2.5, 0.012, ROCK, 20.0)
+    points = monitor.MonitoringPoints(["A-1"], [setup.toe])
+    O.run(50, True)
+    points.record()
+    checkpoint = monitor.Checkpoint(str(tmp_path))
+    assert not checkpoint.exists()
+    checkpoint.save({"tilt": 12.5, "points": points.as_dict()})
+    iteration, position = O.iter, tuple(O.bodies[setup.toe].state.pos)
+    O.reset()
+    state = checkpoint.load()
+    assert state["tilt"] == 12.5 and O.iter == iteration
+    assert tuple(O.bodies[setup.toe].state.pos) == position
+    restored = monitor.MonitoringPoints.from_dict(json.loads(json.dumps(state["points"])))
+    restored.record()
+    assert len(restored.time) == 2 and restored.total("A-1")[0] == pytest.approx(points.total("A-1")[0])
+
+
+def test_missing_checkpoint_says_what_to_do(tmp_path):
+    with pytest.raises(FileNotFoundError, match="without resume"):
+        monitor.Checkpoint(str(tmp_path)).load()
+
+
+def test_bad_stage_criteria_are_refused():
+    with pytest.raises(ValueError, match="rest_speed"):
+        tilting.StageCriteria(rest_speed=0)

@@ -1,0 +1,66 @@
+"""The ParaView series reads back with VTK: counts and fields of discs, bonds and joints."""
+import math
+import os
+import xml.etree.ElementTree as ET
+
+import pytest
+from lattice import R, material
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
+from yade import O
+from yade.wrapper import JointSetGeometry, SmoothJointMat
+
+from toppling import bonding, boundary, joints, paraview, scene
+
+
+def read(path):
+    reader = vtkXMLUnstructuredGridReader()
+    reader.SetFileName(path)
+    reader.Update()
+    return reader.GetOutput()
+
+
+def field(grid, name, cells=False):
+    data = grid.GetCellData() if cells else grid.GetPointData()
+    return vtk_to_numpy(data.GetArray(name))
+
+
+def test_series_of_discs_bonds_and_joints(empty_scene, tmp_path):
+    # pair A (x = 0): a weak bond, pulled apart until it breaks in tension;
+    # pair B (x = 4R): a smooth joint; pair C (x = 8R): an intact bond.
+    rock = material(bondTensileStrength=1e4)
+    for x in (0, 4 * R, 8 * R):
+        O.bodies.append([scene.disc((x, 0), R, rock, fixed=True), scene.disc((x, 2 * R), R, rock, fixed=x > 0)])
+    O.engines = scene.engines(gravity=(0, 0, 0))
+    bonding.bond_within_gap(1e-9)
+    joint = JointSetGeometry(segmentStarts=[(3 * R, R)], segmentEnds=[(5 * R, R)])
+    system = joints.install_joints([(joint, SmoothJointMat(normal=(0, 1, 0), frictionAngle=math.radians(20)))],
+                                   lo=(-R, -R), hi=(10 * R, 4 * R))
+    series = paraview.ParaViewSeries(str(tmp_path), system.blockOfBody)
+    series.snapshot()
+    boundary.move([1], (0, 0.01))
+    while not scene.bond_law().breakMode:
+        O.step()
+    O.run(10, True)
+    paths = series.snapshot()
+    assert [os.path.basename(p) for p in paths] == ["discs_00001.vtu", "bonds_00001.vtu", "joints_00001.vtu"]
+
+    discs = read(paths[0])
+    assert discs.GetNumberOfPoints() == 6
+    assert field(discs, "radius") == pytest.approx([R] * 6)
+    assert field(discs, "displacement")[1][1] > 0 and field(discs, "velocity")[1][1] == pytest.approx(0.01)
+    assert list(field(discs, "fixed")) == [1, 0, 1, 1, 1, 1]
+    assert len(field(discs, "block")) == 6
+    bonds = read(paths[1])
+    assert bonds.GetNumberOfCells() == 2
+    assert sorted(field(bonds, "state", cells=True)) == [1, 2]  # C intact, A broken in tension
+    assert len(field(bonds, "sigma_max", cells=True)) == 2
+    joint_grid = read(paths[2])
+    assert joint_grid.GetNumberOfCells() == 1
+    assert list(field(joint_grid, "set", cells=True)) == [0]
+    assert len(field(joint_grid, "slip", cells=True)) == 1
+
+    for kind in paraview.KINDS:
+        entries = ET.parse(tmp_path / f"{kind}.pvd").getroot().find("Collection")
+        assert [e.get("file") for e in entries] == [f"{kind}_00000.vtu", f"{kind}_00001.vtu"]
+        assert float(entries[1].get("timestep")) == pytest.approx(O.time)
