@@ -55,16 +55,24 @@ def _write(grid, path: str) -> None:
 
 
 class ParaViewSeries:
-    """Snapshots of the current scene into ``<folder>``; displacements from now on."""
+    """Snapshots of the current scene into ``<folder>``; displacements from now on, or, when
+    resuming, from ``state`` (what :meth:`state` returned then)."""
 
-    def __init__(self, folder: str, block_of_body=None):
+    def __init__(self, folder: str, block_of_body=None, state: dict | None = None):
         os.makedirs(folder, exist_ok=True)
         self.folder = folder
         self.block_of_body = list(block_of_body or [])
-        self.ids = [b.id for b in O.bodies if b is not None and isinstance(b.shape, Sphere)]
-        self.reference = np.array([tuple(O.bodies[i].state.pos) for i in self.ids])
+        if state:
+            self.ids, self.reference, self.times = state["ids"], np.array(state["reference"]), state["times"]
+        else:
+            self.ids = [b.id for b in O.bodies if b is not None and isinstance(b.shape, Sphere)]
+            self.reference = np.array([tuple(O.bodies[i].state.pos) for i in self.ids])
+            self.times = []
         self.index = {i: k for k, i in enumerate(self.ids)}
-        self.times: list[float] = []
+
+    def state(self) -> dict:
+        """What a resumed run needs to continue this series (JSON-serialisable)."""
+        return {"ids": self.ids, "reference": self.reference.tolist(), "times": self.times}
 
     def snapshot(self) -> list[str]:
         """Write the three ``.vtu`` files of this moment and update the ``.pvd`` indexes."""

@@ -1,4 +1,5 @@
 """The ParaView series reads back with VTK: counts and fields of discs, bonds and joints."""
+import json
 import math
 import os
 import xml.etree.ElementTree as ET
@@ -64,3 +65,17 @@ def test_series_of_discs_bonds_and_joints(empty_scene, tmp_path):
         entries = ET.parse(tmp_path / f"{kind}.pvd").getroot().find("Collection")
         assert [e.get("file") for e in entries] == [f"{kind}_00000.vtu", f"{kind}_00001.vtu"]
         assert float(entries[1].get("timestep")) == pytest.approx(O.time)
+
+
+def test_resumed_series_continues_numbering_and_displacements(empty_scene, tmp_path):
+    O.bodies.append([scene.disc((0, 0), R, material()), scene.disc((4 * R, 0), R, material())])
+    O.engines = scene.engines()
+    series = paraview.ParaViewSeries(str(tmp_path))
+    series.snapshot()
+    saved = json.loads(json.dumps(series.state()))
+    O.bodies[0].state.pos = (0.5 * R, 0, 0)
+    resumed = paraview.ParaViewSeries(str(tmp_path), state=saved)
+    discs = read(resumed.snapshot()[0])
+    assert field(discs, "displacement")[0] == pytest.approx((0.5 * R, 0, 0))
+    entries = ET.parse(tmp_path / "discs.pvd").getroot().find("Collection")
+    assert [e.get("file") for e in entries] == ["discs_00000.vtu", "discs_00001.vtu"]
