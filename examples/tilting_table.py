@@ -60,7 +60,8 @@ from toppling import (analysis, bonding, boundary, columns, geometry, joints, mo
 
 readParamsFromTable(arrangement="ideal", rmin=1e-3, rmax=4e-3, porosity=0.18, seed=1, start_tilt=20.0, step=1.0,
                     max_tilt=45.0, damping=0.7, chunk=0.02, rest_speed=1e-3, fail_displacement=5e-3,
-                    max_stage_time=0.6, post_failure_time=0.3, resume=0, out="results/tilting_table", noTableOk=True)
+                    max_stage_time=0.6, post_failure_time=0.3, bond_tensile_strength=0.0, main_joint_friction=0.0,
+                    resume=0, out="results/tilting_table", noTableOk=True)
 from yade.params import table  # noqa: E402  (filled by readParamsFromTable)
 
 WIDTH, BLOCK_LENGTH, T, COLUMNS = 0.05, 0.10, 0.047, 15
@@ -80,6 +81,13 @@ THESIS = {"ideal": dict(failure_tilt_deg=35, phi_deg=[15]), "random": dict(failu
 
 if table.arrangement not in TABLE_5_2:
     raise ValueError(f"arrangement = {table.arrangement!r} is invalid: it must be 'ideal' or 'random'")
+# Calibration knobs the issue allows (0: the table's value); stay within the thesis' ranges,
+# bond tensile strength 13.5-209 kPa (Tables 5-1, 5-2), joint friction 0.15-0.23 (Table 5-3).
+if table.bond_tensile_strength:
+    TABLE_5_2[table.arrangement]["bondTensileStrength"] = table.bond_tensile_strength
+if table.main_joint_friction:
+    main_joints, base_joints, gap = TABLE_5_3[table.arrangement]
+    TABLE_5_3[table.arrangement] = ((main_joints[0], table.main_joint_friction), base_joints, gap)
 criteria = tilting.StageCriteria(table.chunk, table.rest_speed, table.fail_displacement, table.max_stage_time)
 
 
@@ -149,6 +157,11 @@ else:
 ids, tops = state["ids"], points.ids
 series = paraview.ParaViewSeries(f"{table.out}/paraview", joints.rock_functor().joints.blockOfBody, state.get("series"))
 progress = monitor.Progress()
+earlier_wall_time = state.get("wall_time", 0.0)  # of the runs this one resumes
+
+
+def wall_time() -> float:
+    return earlier_wall_time + progress.wall_time
 
 
 def on_chunk() -> None:
@@ -171,10 +184,18 @@ while state["failure_tilt"] is None and state["tilt"] <= table.max_tilt + 1e-9:
         state["reference"] = tilting.positions(ids).tolist()
         state["tilt"] += table.step
     state["points"], state["series"] = points.as_dict(), series.state()
+    state["wall_time"] = wall_time()
     checkpoint.save(state)
 
 if state["failure_tilt"] is None:
-    raise RuntimeError(f"no failure up to max_tilt = {table.max_tilt} deg: raise max_tilt")
+    # stable throughout: say so in the summary (a sweep goes on), resumable with a higher max_tilt
+    output.write_summary(table.out, output.table_inputs(table), failure_tilt_deg=None,
+                         stable_up_to_deg=state["stages"][-1]["tilt"], phi_deg=[], s_over_h=None, t_over_h=None,
+                         thesis=THESIS[table.arrangement], tensile_breaks=scene.bond_law().breakMode.count(2),
+                         shear_breaks=scene.bond_law().breakMode.count(3), discs=len(ids), stages=state["stages"],
+                         steps=O.iter, simulated_time=O.time, wall_time=wall_time())
+    print(f"no failure up to max_tilt = {table.max_tilt} deg: rerun with resume=1 and a higher max_tilt")
+    raise SystemExit(0)
 if not state.get("post_failure_done"):
     O.run(max(1, int(table.post_failure_time / O.dt)), True)  # let the failure surface develop
     scene.check_stable("the post-failure run")
@@ -182,6 +203,7 @@ if not state.get("post_failure_done"):
     series.snapshot()
     state["post_failure_done"] = True
     state["points"], state["series"] = points.as_dict(), series.state()
+    state["wall_time"] = wall_time()
     checkpoint.save(state)
 
 
@@ -199,8 +221,9 @@ def analyse() -> dict:
     top_index = [ids.index(i) for i in tops]
     top_disp = np.linalg.norm(disp[top_index], axis=1)
     threshold = max(0.2 * top_disp.max(), 1e-4)
-    speeds = [abs(points.total(label)[-1] - points.total(label)[-2]) / table.chunk if len(points.time) > 1 else 0.0
-              for label in points.labels]
+    last = points.time[-1] - points.time[-2] if len(points.time) > 1 else math.inf
+    speeds = [abs(points.total(label)[-1] - points.total(label)[-2]) / last if len(points.time) > 1 else 0.0
+              for label in points.labels]  # over the last interval: the post-failure run
     zones, failure_points = [], []
     for k in range(1, layout.count + 1):
         members = column == k
@@ -232,7 +255,7 @@ summary = dict(
     zones={analysis.column_label(k + 1): z for k, z in enumerate(result["zones"])},
     failure_points=result["failure_points"], slope_height=result["height"], thesis=THESIS[table.arrangement],
     tensile_breaks=law.breakMode.count(2), shear_breaks=law.breakMode.count(3), discs=len(ids),
-    stages=state["stages"], steps=O.iter, simulated_time=O.time, wall_time=progress.wall_time)
+    stages=state["stages"], steps=O.iter, simulated_time=O.time, wall_time=wall_time())
 output.write_summary(table.out, output.table_inputs(table), **summary)
 
 radii = [O.bodies[i].shape.radius for i in ids]

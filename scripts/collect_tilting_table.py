@@ -24,9 +24,11 @@ def main(folder: str) -> None:
         with open(path) as f:
             s = json.load(f)
         inputs = s["inputs"]
+        tilt = fmt(s["failure_tilt_deg"]) if s["failure_tilt_deg"] is not None else \
+            f"none up to {fmt(s.get('stable_up_to_deg'))}"
         rows.append(f"| {os.path.basename(os.path.dirname(path))} | {inputs['arrangement']} | "
                     f"{1e3 * inputs['rmin']:g}–{1e3 * inputs['rmax']:g} | {s['discs']} | "
-                    f"{fmt(s['failure_tilt_deg'])} | {fmt(s['thesis']['failure_tilt_deg'])} | {fmt(s['phi_deg'])} | "
+                    f"{tilt} | {fmt(s['thesis']['failure_tilt_deg'])} | {fmt(s['phi_deg'])} | "
                     f"{fmt(s['thesis']['phi_deg'])} | {fmt(s['s_over_h'], 2)} | {fmt(s['t_over_h'], 2)} | "
                     f"{s['tensile_breaks']} / {s['shear_breaks']} | {s['wall_time']:.0f} |")
     if not rows:
