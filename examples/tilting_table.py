@@ -164,6 +164,11 @@ def wall_time() -> float:
     return earlier_wall_time + progress.wall_time
 
 
+def save_checkpoint() -> None:
+    state["points"], state["series"], state["wall_time"] = points.as_dict(), series.state(), wall_time()
+    checkpoint.save(state)
+
+
 def on_chunk() -> None:
     points.record()
     state["energy"].append((O.time, state["tilt"], utils.kineticEnergy()))
@@ -183,9 +188,7 @@ while state["failure_tilt"] is None and state["tilt"] <= table.max_tilt + 1e-9:
     else:
         state["reference"] = tilting.positions(ids).tolist()
         state["tilt"] += table.step
-    state["points"], state["series"] = points.as_dict(), series.state()
-    state["wall_time"] = wall_time()
-    checkpoint.save(state)
+    save_checkpoint()
 
 if state["failure_tilt"] is None:
     # stable throughout: say so in the summary (a sweep goes on), resumable with a higher max_tilt
@@ -202,9 +205,7 @@ if not state.get("post_failure_done"):
     on_chunk()
     series.snapshot()
     state["post_failure_done"] = True
-    state["points"], state["series"] = points.as_dict(), series.state()
-    state["wall_time"] = wall_time()
-    checkpoint.save(state)
+    save_checkpoint()
 
 
 # ---- analysis (slope frame: x normal to the columns towards the face, y up the columns) ----
