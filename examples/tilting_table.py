@@ -121,9 +121,9 @@ def build() -> columns.ColumnLayout:
     # its walls loose discs would slump off the steps (the thesis settles inside walls, §5.3.2).
     bonding.bond_within_gap(BOND_GAP, ids)
     (kn_main, mu_main), (kn_base, mu_base), gap = TABLE_5_3[table.arrangement]
-    main = SmoothJointMat(normal=(1, 0, 0), normalStiffness=kn_main, shearStiffness=kn_main,
+    main = SmoothJointMat(normalStiffness=kn_main, shearStiffness=kn_main,
                           frictionAngle=math.atan(mu_main), gap=gap, thickness=T)
-    base = SmoothJointMat(normal=(0, 1, 0), normalStiffness=kn_base, shearStiffness=kn_base,
+    base = SmoothJointMat(normalStiffness=kn_base, shearStiffness=kn_base,
                           frictionAngle=math.atan(mu_base), gap=gap, thickness=T)
     blocky, phases = cross_joint_columns(layout)
     joints.install_joints([(layout.main_joints(), main), (layout.cross_joints(blocky, BLOCK_LENGTH, phases), base)],
@@ -233,7 +233,7 @@ def analyse() -> dict:
         if point:
             near_cut = members & (np.abs(pos_local[:, 1] - point[1]) < 2 * table.rmax)
             base = float(np.linalg.norm(disp[near_cut], axis=1).mean()) if near_cut.any() else 0.0
-        zone = analysis.zone(top_disp[k - 1], speeds[k - 1] > table.rest_speed, top_disp[k - 1], base, still=threshold / 10)
+        zone = analysis.zone(top_disp[k - 1], speeds[k - 1] > table.rest_speed, base, still=threshold / 10)
         zones.append(zone)
         if point and zone in ("toppling", "sliding"):
             failure_points.append(point)

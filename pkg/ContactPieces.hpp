@@ -38,12 +38,15 @@ namespace toppling {
 	// Component of v orthogonal to the unit vector n.
 	inline Vector3r tangential(const Vector3r& v, const Vector3r& n) { return v - v.dot(n) * n; }
 
+	// The smaller of two radii; a non-positive radius (a wall) does not count.
+	inline Real smallerRadius(Real r1, Real r2) { return (r1 > 0 && r2 > 0) ? math::min(r1, r2) : math::max(r1, r2); }
+
 	// A stable explicit DEM step moves contacting bodies by a small fraction of their size; a
 	// relative displacement of a tenth of the smaller radius in one step means the time step is
 	// far too large (the run is blowing up). Non-positive radii (walls) are ignored.
 	inline bool stepIsSmall(const Vector3r& relativeVelocity, Real dt, Real r1, Real r2)
 	{
-		const Real r  = (r1 > 0 && r2 > 0) ? math::min(r1, r2) : math::max(r1, r2);
+		const Real r  = smallerRadius(r1, r2);
 		const Real d2 = relativeVelocity.squaredNorm() * dt * dt;
 		return math::isfinite(d2) && (r <= 0 || d2 < 0.01 * r * r);
 	}

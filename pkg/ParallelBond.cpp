@@ -119,13 +119,14 @@ void Ip2_ParallelBondMat_ParallelBondMat_ParallelBondPhys::go(
 
 bool Ip2_ParallelBondMat_ParallelBondMat_ParallelBondPhys::makeJoint(Interaction& interaction) const
 {
-	if (!joints) return false;
-	const State&   s1     = *Body::byId(interaction.getId1(), scene)->state;
-	const State&   s2     = *Body::byId(interaction.getId2(), scene)->state;
-	const Vector3r branch = s2.pos - s1.pos;
+	const Body::id_t id1 = interaction.getId1(), id2 = interaction.getId2();
+	if (!joints || !joints->straddles(id1, id2)) return false; // rock: skip the bond scan below
+	const Body&    b1     = *Body::byId(id1, scene);
+	const Body&    b2     = *Body::byId(id2, scene);
+	const Vector3r branch = b2.state->pos - b1.state->pos;
 	Real           turn   = 0; // discs without intact bonds: the joint as installed
-	toppling::pairTurn(*Body::byId(interaction.getId1(), scene), *Body::byId(interaction.getId2(), scene), *scene, turn);
-	const int set = joints->setFor(interaction.getId1(), interaction.getId2(), branch, turn, *scene);
+	toppling::pairTurn(b1, b2, *scene, turn);
+	const int set = joints->setFor(id1, id2, branch, turn, *scene);
 	if (set < 0) return false;
 	const auto* mat  = dynamic_cast<const SmoothJointMat*>(scene->materials[joints->jointMaterials[set]].get());
 	const auto* geom = dynamic_cast<const ScGeom*>(interaction.geom.get());

@@ -156,8 +156,7 @@ namespace toppling {
 	// The rock's rotation at a disc [rad]: the mean turn of its intact bonds since they were
 	// installed. Unlike the disc's own spin, this is defined by its neighbours, so a loose disc
 	// spinning in a pore does not count. False with fewer than two intact bonds: a disc hanging
-	// on one bond swings about its neighbour (measured: 11° in a loose packing) and would tilt
-	// its joint contacts.
+	// on one bond swings about its neighbour and would tilt its joint contacts.
 	bool meanBondTurn(const Body& body, const Scene& scene, Real& turn);
 } // namespace toppling
 

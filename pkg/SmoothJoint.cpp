@@ -61,18 +61,27 @@ void JointSystem::addPair(Body::id_t id1, Body::id_t id2, int set)
 	pairId1.push_back(id1);
 	pairId2.push_back(id2);
 	pairSet.push_back(set);
+	index[key(id1, id2)] = set;
+}
+
+void JointSystem::rebuildIndex()
+{
+	// The three lists may differ in length for a moment while Python assigns them one by one.
 	index.clear();
+	for (size_t i = 0; i < std::min({ pairId1.size(), pairId2.size(), pairSet.size() }); ++i)
+		index[key(pairId1[i], pairId2[i])] = pairSet[i];
+}
+
+int JointSystem::listedSet(Body::id_t id1, Body::id_t id2) const
+{
+	const auto it = index.find(key(id1, id2));
+	return it == index.end() ? -1 : it->second;
 }
 
 int JointSystem::setFor(Body::id_t id1, Body::id_t id2, const Vector3r& branch, Real rockTurn, const Scene& sc) const
 {
-	if (index.empty() && !pairSet.empty()) {
-		for (size_t i = 0; i < pairSet.size(); ++i)
-			index[key(pairId1[i], pairId2[i])] = pairSet[i];
-	}
-	if (const auto it = index.find(key(id1, id2)); it != index.end()) return it->second;
-	const auto block = [&](Body::id_t id) { return size_t(id) < blockOfBody.size() ? blockOfBody[id] : -1; };
-	if (block(id1) < 0 || block(id2) < 0 || block(id1) == block(id2)) return -1;
+	if (const int listed = listedSet(id1, id2); listed >= 0) return listed;
+	if (!differentBlocks(id1, id2)) return -1;
 	// Two blocks that were not in contact when the joints were installed: the set whose
 	// (rotated) joint plane is most nearly perpendicular to the centre line.
 	int  best          = -1;
@@ -113,12 +122,11 @@ namespace toppling {
 		auto phys      = shared_ptr<SmoothJointPhys>(new SmoothJointPhys());
 		phys->jointSet = set;
 		// Orient the normal from body 1's side of the joint to body 2's.
-		const Vector3r n    = rotatedZ(mat.normal, rockTurn);
-		const Real     sign = n.dot(branch) >= 0 ? 1 : -1;
-		phys->jointNormal0  = sign * mat.normal;
-		phys->jointNormal   = sign * n;
-		const Real r1 = geom.refR1, r2 = geom.refR2;
-		const Real rMin              = (r1 > 0 && r2 > 0) ? math::min(r1, r2) : math::max(r1, r2);
+		const Vector3r n             = rotatedZ(mat.normal, rockTurn);
+		const Real     sign          = n.dot(branch) >= 0 ? 1 : -1;
+		phys->jointNormal0           = sign * mat.normal;
+		phys->jointNormal            = sign * n;
+		const Real rMin              = smallerRadius(geom.refR1, geom.refR2);
 		phys->area                   = 2 * mat.radiusMultiplier * rMin * mat.thickness;
 		phys->normalStiffness        = mat.normalStiffness;
 		phys->shearStiffness         = mat.shearStiffness;

@@ -9,6 +9,7 @@
 #include <core/Material.hpp>
 #include <pkg/dem/FrictPhys.hpp>
 #include <pkg/dem/ScGeom.hpp>
+#include <algorithm>
 #include <unordered_map>
 
 namespace yade {
@@ -23,7 +24,7 @@ public:
 		"Mechanical parameters of one joint set (smooth joint, PFC2D form) and its orientation. Not assigned to "
 		"bodies: :yref:`JointSystem` maps pairs of discs to it. Stiffnesses are per unit area (the thesis' "
 		"N/m³); the joint area of a pair is $A=2\\bar\\lambda\\min(R_1,R_2)t$.",
-		((Vector3r, normal, Vector3r(0, 1, 0), Attr::triggerPostLoad, "Unit normal of the joint plane (xy-plane vector) for discs that have not rotated."))
+		((Vector3r, normal, Vector3r(0, 1, 0), Attr::triggerPostLoad, "Unit normal of the joint plane (xy-plane vector) for discs that have not rotated; ``toppling.joints.install_joints`` sets it from the set's :yref:`JointSetGeometry.dip`."))
 		((Real, normalStiffness, 1e9, Attr::triggerPostLoad, "Joint normal stiffness $k_n^j$ [N/m³] (> 0)."))
 		((Real, shearStiffness, 1e9, Attr::triggerPostLoad, "Joint shear stiffness $k_s^j$ [N/m³] (> 0)."))
 		((Real, frictionAngle, 0.5, Attr::triggerPostLoad, "Joint friction angle $\\phi_j$ [rad], in [0, π/2)."))
@@ -46,12 +47,14 @@ REGISTER_SERIALIZABLE(SmoothJointMat);
 // Which disc pairs are joint contacts, and with which joint set.
 class JointSystem : public Serializable {
 public:
+	// A listed joint pair, or discs of two different blocks: the pair may get a smooth joint.
+	bool straddles(Body::id_t id1, Body::id_t id2) const { return listedSet(id1, id2) >= 0 || differentBlocks(id1, id2); }
 	// Joint set (index into jointMaterials) for a pair, or -1 for rock. `branch` is x2 - x1.
 	int                 setFor(Body::id_t id1, Body::id_t id2, const Vector3r& branch, Real rockTurn, const Scene& scene) const;
 	void                addPair(Body::id_t id1, Body::id_t id2, int set);
 	boost::python::list crossingPairs(const JointSetGeometry& set, const Vector2r& lo, const Vector2r& hi) const;
 	void                assignBlocks(const boost::python::list& persistentSets);
-	void                postLoad(JointSystem&) { index.clear(); }
+	void                postLoad(JointSystem&) { rebuildIndex(); }
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(JointSystem, Serializable,
 		"The joints of a scene: pairs of discs that straddle a joint segment (found when joints are installed, "
@@ -59,9 +62,9 @@ public:
 		"contact between discs of two different blocks (blocks that slid or rotated into each other) gets the "
 		"smooth joint of the set whose current normal is closest to the pair's centre line.",
 		((vector<int>, jointMaterials, , , "Material id (in ``O.materials``) of the :yref:`SmoothJointMat` of each joint set."))
-		((vector<int>, pairId1, , , "First disc of each joint pair."))
-		((vector<int>, pairId2, , , "Second disc of each joint pair."))
-		((vector<int>, pairSet, , , "Joint set of each joint pair."))
+		((vector<int>, pairId1, , Attr::triggerPostLoad, "First disc of each joint pair."))
+		((vector<int>, pairId2, , Attr::triggerPostLoad, "Second disc of each joint pair."))
+		((vector<int>, pairSet, , Attr::triggerPostLoad, "Joint set of each joint pair."))
 		((vector<int>, blockOfBody, , , "Block of each body (index = body id); -1 or missing: no block."))
 		,
 		/*ctor*/,
@@ -77,8 +80,14 @@ public:
 	// clang-format on
 
 private:
-	mutable std::unordered_map<uint64_t, int> index; // pair key -> set, rebuilt lazily
-	static uint64_t                           key(Body::id_t a, Body::id_t b)
+	// Pair key -> set. Kept up to date by addPair and postLoad, never built on demand: the Ip2
+	// reads it from several threads at once.
+	std::unordered_map<uint64_t, int> index;
+	void                              rebuildIndex();
+	int                               listedSet(Body::id_t id1, Body::id_t id2) const;
+	int                               blockOf(Body::id_t id) const { return size_t(id) < blockOfBody.size() ? blockOfBody[id] : -1; }
+	bool            differentBlocks(Body::id_t id1, Body::id_t id2) const { return blockOf(id1) >= 0 && blockOf(id2) >= 0 && blockOf(id1) != blockOf(id2); }
+	static uint64_t key(Body::id_t a, Body::id_t b)
 	{
 		if (a > b) std::swap(a, b);
 		return (uint64_t(uint32_t(a)) << 32) | uint32_t(b);

@@ -13,7 +13,6 @@ bonds' shear stiffness is G A / L. Discrete-beam error (midpoint rule over 10 se
 
     ./yade -x -n examples/validation/cantilever.py
 """
-import math
 
 from yade import O
 from yade.utils import readParamsFromTable

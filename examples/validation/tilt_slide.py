@@ -16,7 +16,7 @@ import math
 from yade import O
 from yade.utils import readParamsFromTable
 
-from toppling import incline, output
+from toppling import incline, output, tilting
 
 readParamsFromTable(phi=math.degrees(math.atan(0.4)), rmax=0.012, porosity=0.2, step=0.25, stage_time=0.05, seed=1,
                     out="results/tilt_slide", noTableOk=True)
@@ -27,11 +27,11 @@ ROCK = dict(young=15e6, knKs=1.4, density=2340.0, bondYoung=15.9e6, bondKnKs=1.8
             bondNormalDamping=0.2)  # as block_on_incline.py (Table 5-6 stiffnesses)
 setup = incline.build(B, H, table.rmax / R_RATIO, table.rmax, ROCK, table.phi, porosity=table.porosity, seed=table.seed)
 
-incline.tilt(table.phi - 4)  # first tilt well below atan(mu), then settle there (damped)
+tilting.set_tilt(table.phi - 4)  # first tilt well below atan(mu), then settle there (damped)
 incline.settle(4 * table.stage_time)
 alpha, slide_tilt, history = table.phi - 4 + table.step, None, []
 while alpha < table.phi + 4 and slide_tilt is None:
-    incline.tilt(alpha)
+    tilting.set_tilt(alpha)
     x0 = O.bodies[setup.toe].state.pos[0]
     O.run(max(1, int(table.stage_time / O.dt)), True)
     history.append((alpha, incline.toe_translation(setup, x0)))

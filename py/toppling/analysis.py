@@ -105,10 +105,9 @@ def fit_failure_surface(points: Sequence[tuple[float, float]], split_gain: float
     return [one]
 
 
-def zone(total_displacement: float, still_moving: bool, top_displacement: float, base_displacement: float,
-         still: float) -> str:
-    """Zone of one column (see the module's definitions)."""
-    if total_displacement < still:
+def zone(top_displacement: float, still_moving: bool, base_displacement: float, still: float) -> str:
+    """Zone of one column from its top point's displacement (see the module's definitions)."""
+    if top_displacement < still:
         return "no-movement"
     if not still_moving:
         return "stable"

@@ -2,7 +2,7 @@
 
 The scene of the block-on-incline and tilt tests (thesis §4.4): base and block are packed as
 one polygon and cut by the joint at y = 0 (thesis Fig 3-4), so the interface is as rough as
-the packing; tilting rotates gravity (thesis Fig 5-7).
+the packing; tilt with ``toppling.tilting.set_tilt`` (gravity rotated, thesis Fig 5-7).
 """
 from __future__ import annotations
 
@@ -12,9 +12,8 @@ from dataclasses import dataclass
 from yade import O
 from yade.wrapper import JointSetGeometry, ParallelBondMat, SmoothJointMat
 
-from toppling import bonding, geometry, joints, packing, scene
+from toppling import bonding, geometry, joints, packing, scene, tilting
 
-G = 9.81
 
 
 @dataclass
@@ -44,26 +43,20 @@ def build(b: float, h: float, rmin: float, rmax: float, rock: dict, joint_fricti
                           bondCohesion=1e12, **rock)
     base = [O.bodies.append(scene.disc((x, y), r, mat, fixed=True)) for x, y, r in discs if y < 0]
     block = [O.bodies.append(scene.disc((x, y), r, mat)) for x, y, r in discs if y >= 0]
-    O.engines = scene.engines(gravity=(0, -G, 0), local_damping=0.0)
+    O.engines = scene.engines(gravity=(0, -tilting.G, 0), local_damping=0.0)
     floaters = set(bonding.remove_floaters(BOND_GAP * rmin, ids=block))
     block = [i for i in block if i not in floaters]
     bonding.bond_within_gap(BOND_GAP * rmin)
     interface, box = JointSetGeometry(origin=(0, 0), dip=0), ((-1, -1), (width + 1, h + 1))
     if smooth:
         stiffness = mat.bondYoung / (2 * rmin)
-        mechanics = SmoothJointMat(normal=(0, 1, 0), normalStiffness=stiffness, shearStiffness=stiffness / mat.bondKnKs,
+        mechanics = SmoothJointMat(normalStiffness=stiffness, shearStiffness=stiffness / mat.bondKnKs,
                                    frictionAngle=math.radians(joint_friction_deg))
         joints.install_joints([(interface, mechanics)], *box)
     else:
         joints.cut_bonds(interface, *box)
     toe = min(block, key=lambda i: (O.bodies[i].state.pos - (x0 + b, 0, 0)).norm())
     return BlockOnBase(block, base, toe, b, h)
-
-
-def tilt(alpha_deg: float) -> None:
-    """Tilt the table to alpha by rotating gravity (NewtonIntegrator is the last engine)."""
-    a = math.radians(alpha_deg)
-    O.engines[-1].gravity = (G * math.sin(a), -G * math.cos(a), 0)
 
 
 def settle(seconds: float, damping: float = 0.5) -> None:

@@ -1,6 +1,7 @@
 """Install pre-existing joints: bonded pairs that straddle a joint become smooth joints."""
 from __future__ import annotations
 
+import math
 from typing import Sequence
 
 from yade import O, utils
@@ -20,11 +21,17 @@ def is_persistent(geometry: JointSetGeometry) -> bool:
     return not geometry.segmentStarts and geometry.bridgeLength == 0
 
 
+def joint_normal(geometry: JointSetGeometry) -> tuple[float, float, float]:
+    """Unit normal of a set's joint lines, from its dip (explicit segments: the set's ``dip``)."""
+    a = math.radians(geometry.dip)
+    return (-math.sin(a), math.cos(a), 0.0)
+
+
 def install_joints(sets: Sequence[tuple[JointSetGeometry, SmoothJointMat]], lo, hi) -> JointSystem:
     """Install joint sets (geometry, mechanics) in the current scene, within the box lo..hi.
 
     Every interaction whose centre-to-centre segment crosses a joint loses its bond and gets
-    the smooth joint of that set (thesis §3.2.4); discs are given the block (band of every
+    the smooth joint of that set (thesis §3.2.4), oriented by the geometry's dip; discs are given the block (band of every
     persistent set) they lie in, so contacts that form later between blocks are smooth joints
     too. Returns the scene's JointSystem.
     """
@@ -33,6 +40,7 @@ def install_joints(sets: Sequence[tuple[JointSetGeometry, SmoothJointMat]], lo, 
     materials = list(system.jointMaterials)
     pairs = []
     for geometry, mechanics in sets:
+        mechanics.normal = joint_normal(geometry)
         materials.append(O.materials.append(mechanics))
         for i, j in system.crossingPairs(geometry, lo, hi):
             system.addPair(i, j, len(materials) - 1)

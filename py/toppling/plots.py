@@ -4,10 +4,11 @@ from __future__ import annotations
 
 from typing import Sequence
 
-import numpy as np
-from matplotlib.collections import EllipseCollection
+from toppling import output  # first: it selects matplotlib's headless backend
 
-from toppling import output
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+from matplotlib.collections import EllipseCollection  # noqa: E402
 from toppling.analysis import Plane
 from toppling.monitor import MonitoringPoints
 
@@ -58,8 +59,6 @@ def tilt_history(out: str, energy: Sequence[tuple[float, float, float]], points:
 
 def monitoring(out: str, points: MonitoringPoints, labels: Sequence[str]) -> str:
     """X, Y, dY/dX and total displacement of the labelled points against time (Fig 5-21)."""
-    import matplotlib.pyplot as plt
-
     fig, axes = plt.subplots(2, 2, figsize=(10, 7))
     t = np.array(points.time)
     for label in labels:

@@ -94,11 +94,11 @@ def test_slope_frame_of_tilted_joints():
 
 def test_zones_and_normalised_distances():
     zones = [analysis.zone(*c, still=1e-4) for c in [
-        (0.05, True, 0.05, 0.04),  # toe column slides
-        (0.03, True, 0.03, 0.001),  # topples
-        (0.02, True, 0.02, 0.001),  # topples
-        (0.002, False, 0.002, 0.0),  # moved, at rest
-        (0.0, False, 0.0, 0.0)]]
+        (0.05, True, 0.04),  # toe column slides
+        (0.03, True, 0.001),  # topples
+        (0.02, True, 0.001),  # topples
+        (0.002, False, 0.0),  # moved, at rest
+        (0.0, False, 0.0)]]
     assert zones == ["sliding", "toppling", "toppling", "stable", "no-movement"]
     d = analysis.zone_distances(zones, far_edges=[0.1, 0.2, 0.3, 0.4, 0.5], height=0.5)
     assert d == {"t_over_h": pytest.approx(0.6), "s_over_h": pytest.approx(0.8)}

@@ -1,5 +1,4 @@
 """examples/validation/block_on_incline.py: a bonded block on a smooth joint (thesis §4.4)."""
-import pytest
 from conftest import run_example
 
 COARSE = 0.012  # rmax [m]: a few dozen discs across the block, seconds per run

@@ -20,7 +20,7 @@ def bonded_pair(friction_deg: float = 0.0):
     O.bodies.append([scene.disc((0, 0), R, rock, fixed=True), scene.disc((0, 2 * R), R, rock)])
     O.engines = scene.engines(gravity=(0, 0, 0))
     bonding.bond_within_gap(1e-9)
-    mechanics = SmoothJointMat(normal=(0, 1, 0), normalStiffness=1e11, shearStiffness=1e11, bonded=True,
+    mechanics = SmoothJointMat(normalStiffness=1e11, shearStiffness=1e11, bonded=True,
                                tensileStrength=SIGMA, cohesion=COHESION, frictionAngle=math.radians(friction_deg),
                                thickness=rock.thickness)
     joints.install_joints([(JointSetGeometry(origin=(0, R), dip=0), mechanics)], lo=(-2 * R, -2 * R), hi=(2 * R, 4 * R))

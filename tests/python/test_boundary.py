@@ -18,7 +18,7 @@ def test_discs_near_the_base_are_flagged_and_held(empty_scene):
 
 
 def test_platen_moves_at_its_velocity(empty_scene):
-    ids = bonded_lattice(4, 4, material())
+    bonded_lattice(4, 4, material())
     top = boundary.near([((-R, 6 * R), (10 * R, 6 * R))], distance=R)
     boundary.move(top, (0, -0.01))
     y0 = [O.bodies[i].state.pos[1] for i in top]

@@ -103,7 +103,7 @@ def test_bad_values_set_later_are_rejected(attribute, value, message):
 @pytest.mark.parametrize("attribute, value, message", BAD_VALUES[:2])
 def test_bad_inherited_values_set_later_stop_the_run(empty_scene, attribute, value, message):
     mat = material()
-    ids = bonded_lattice(2, 2, mat, timestepper=False)
+    bonded_lattice(2, 2, mat, timestepper=False)
     setattr(mat, attribute, value)  # YADE's own setter for ElastMat/FrictMat attributes
     O.interactions.clear()
     O.dt = 1e-7
@@ -114,7 +114,7 @@ def test_bad_inherited_values_set_later_stop_the_run(empty_scene, attribute, val
 def test_bonding_after_settling_is_stress_free_and_limits_the_time_step(empty_scene):
     # Thesis §3.2: discs settle under gravity first, then the bonds are installed.
     mat = material(bondYoung=2e10)
-    ids = bonded_lattice(6, 6, mat, gravity=(0, -9.81, 0), fixed_bottom=True, local_damping=0.5)
+    bonded_lattice(6, 6, mat, gravity=(0, -9.81, 0), fixed_bottom=True, local_damping=0.5)
     law = scene.bond_law()
     for i in list(O.interactions):  # start unbonded: remove the lattice's bonds
         O.interactions.erase(i.id1, i.id2)

@@ -35,7 +35,7 @@ def test_series_of_discs_bonds_and_joints(empty_scene, tmp_path):
     O.engines = scene.engines(gravity=(0, 0, 0))
     bonding.bond_within_gap(1e-9)
     joint = JointSetGeometry(segmentStarts=[(3 * R, R)], segmentEnds=[(5 * R, R)])
-    system = joints.install_joints([(joint, SmoothJointMat(normal=(0, 1, 0), frictionAngle=math.radians(20)))],
+    system = joints.install_joints([(joint, SmoothJointMat(frictionAngle=math.radians(20)))],
                                    lo=(-R, -R), hi=(10 * R, 4 * R))
     series = paraview.ParaViewSeries(str(tmp_path), system.blockOfBody)
     series.snapshot()

@@ -7,9 +7,9 @@ from lattice import R, material
 from yade import O, Quaternion
 from yade.wrapper import JointSetGeometry, SmoothJointMat
 
-from toppling import bonding, joints, scene
+from toppling import bonding, joints, scene, tilting
 
-G = 9.81
+G = tilting.G
 ROWS_SLAB, ROWS_BLOCK, COLS = 3, 5, 24
 Y_JOINT = math.sqrt(3) * R * (ROWS_SLAB - 0.5)  # between the slab's top row and the block's bottom row
 
@@ -34,7 +34,7 @@ def block_on_slab(friction_deg: float, smooth: bool = True):
         return block, None
     bonding.bond_within_gap(1e-6 * R)
     joint = JointSetGeometry(origin=(0, Y_JOINT), dip=0)
-    mechanics = SmoothJointMat(normal=(0, 1, 0), normalStiffness=rock.bondYoung / (2 * R),
+    mechanics = SmoothJointMat(normalStiffness=rock.bondYoung / (2 * R),
                                shearStiffness=rock.bondYoung / (2 * R), frictionAngle=math.radians(friction_deg))
     system = joints.install_joints([(joint, mechanics)], lo=(-R, -R), hi=(2 * R * COLS, 10 * R * ROWS_BLOCK))
     O.run(2000, True)  # settle on the joint, damped
@@ -43,8 +43,7 @@ def block_on_slab(friction_deg: float, smooth: bool = True):
 
 def tilt(alpha_deg: float) -> None:
     """Tilt the table by rotating gravity; no damping from here on."""
-    a = math.radians(alpha_deg)
-    O.engines[-1].gravity = (G * math.sin(a), -G * math.cos(a), 0)
+    tilting.set_tilt(alpha_deg)
     O.engines[-1].damping = 0.0
 
 
