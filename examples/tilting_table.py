@@ -19,24 +19,30 @@ surface y = 0, columns standing along +y, the toe at the right, the slope to the
 * Rectangular blocks have flat tops: each column's top is at the outline's height at the
   column centre (a stepped face).
 * Main joints between all columns (Table 5-3 "joint"). Cross joints ("base joints", Table 5-3)
-  every 10 cm (the block length): ideal arrangement, in every other column starting at the
-  toe (blocky potential) while the columns between are continuous (flexural potential, §5.2.4.1);
-  random arrangement, in every column at a random offset (seeded), i.e. blocks stacked with
-  random staggering.
+  every 10 cm (the block length). Ideal arrangement: in every other column starting at the toe
+  (blocky potential, "freedom at its end", §5.2.4.1), plus one at the table (the top of the
+  fixed layer, Rmax): these columns stand on the table; the columns between are continuous and
+  held by the table (flexural potential, "the fixing block at its pivot point"). Random
+  arrangement: in every column at a random offset (seeded), i.e. blocks stacked with random
+  staggering, each column's lowest block held by the table (with every column free on the
+  table, nothing but the toe column's bonds would hold the model beyond atan 0.2 = 11 deg;
+  it fails there, measured). A column that leans on no downhill neighbour (the toe column)
+  has no cross joint: a free block on a mu 0.23 joint would slide off at 13 deg.
 * Micro-parameters: Tables 5-2 and 5-3, except the porosity (0.18: the packer does not lock in
   overlap, see README) and what the calibration below changes.
 
 Loading: the discs within Rmax of the table are fixed in x and y (§5.2.4.2); gravity is turned
-by the tilt (Fig 5-7), `start_tilt` first, then `step` degrees per stage. Each stage runs in
-chunks of `chunk` seconds with local damping `damping` until
+by the tilt (Fig 5-7). The model first comes to rest on the level table, then the tilt rises
+steadily at `tilt_rate` deg/s to `start_tilt` (a tilt switched on at once loads the columns
+dynamically, up to twice their static stress), then by `step` degrees per stage. Each stage
+runs in chunks of `chunk` seconds with local damping `damping` until
 
 * equilibrium: the fastest column top moves slower than `rest_speed`, or
-* failure: a column top has moved more than `fail_displacement` since the last equilibrium
+* failure: a column top has moved more than `fail_displacement` since the stage began
   (10 % of the column width by default: a column has clearly toppled or slid; the elastic
   response to one step is ~0.3 mm per degree), or it is still moving faster than `rest_speed`
   after `max_stage_time` (the columns' first bending period is ~0.2 s, local damping needs a
-  few). The first stage, from rest straight to `start_tilt`, is judged by the time limit only:
-  its elastic deflection alone is several mm.
+  few).
 
 The failure tilt is the first stage that fails. The run then goes on for `post_failure_time`
 so the failure surface develops, and toppling.analysis finds it (failure points of the
@@ -59,7 +65,7 @@ from toppling import (analysis, bonding, boundary, columns, geometry, joints, mo
                       plots, scene, tilting)
 
 readParamsFromTable(arrangement="ideal", rmin=1e-3, rmax=4e-3, porosity=0.18, seed=1, start_tilt=20.0, step=1.0,
-                    max_tilt=45.0, damping=0.7, chunk=0.02, rest_speed=1e-3, fail_displacement=5e-3,
+                    max_tilt=45.0, tilt_rate=50.0, damping=0.7, chunk=0.02, rest_speed=1e-3, fail_displacement=5e-3,
                     max_stage_time=0.6, post_failure_time=0.3, bond_tensile_strength=0.0, main_joint_friction=0.0,
                     resume=0, out="results/tilting_table", noTableOk=True)
 from yade.params import table  # noqa: E402  (filled by readParamsFromTable)
@@ -126,7 +132,8 @@ def build() -> columns.ColumnLayout:
     base = SmoothJointMat(normalStiffness=kn_base, shearStiffness=kn_base,
                           frictionAngle=math.atan(mu_base), gap=gap, thickness=T)
     blocky, phases = cross_joint_columns(layout)
-    joints.install_joints([(layout.main_joints(), main), (layout.cross_joints(blocky, BLOCK_LENGTH, phases), base)],
+    standing = table.rmax if table.arrangement == "ideal" else 0.0  # blocky columns stand on the table
+    joints.install_joints([(layout.main_joints(), main), (layout.cross_joints(blocky, BLOCK_LENGTH, phases, base=standing), base)],
                           lo=(-1, -1), hi=(layout.toe_x + 1, 1))
     return layout
 
@@ -173,13 +180,16 @@ def on_chunk() -> None:
     points.record()
     state["energy"].append((O.time, state["tilt"], utils.kineticEnergy()))
     span = table.max_tilt - table.start_tilt
-    progress(f"tilt {state['tilt']:.1f} deg", (state["tilt"] - table.start_tilt) / span if span > 0 else None)
+    progress(f"tilt {tilting.current_tilt():.1f} deg", (state["tilt"] - table.start_tilt) / span if span > 0 else None)
 
 
-# ---- tilt in stages until a stage fails ----
+# ---- stand on the level table, tilt slowly to start_tilt, then in stages until a stage fails ----
+if not state["stages"]:
+    if tilting.run_stage(0.0, tops, tilting.positions(tops), criteria, on_chunk) == "failed":
+        raise RuntimeError("the model does not stand on the level table: check the outline and the joints")
+    tilting.ramp(0.0, table.start_tilt, table.start_tilt / table.tilt_rate, on_chunk)
 while state["failure_tilt"] is None and state["tilt"] <= table.max_tilt + 1e-9:
-    outcome = tilting.run_stage(state["tilt"], tops, tilting.positions(tops), criteria, on_chunk,
-                                settling=not state["stages"])
+    outcome = tilting.run_stage(state["tilt"], tops, tilting.positions(tops), criteria, on_chunk)
     state["stages"].append({"tilt": state["tilt"], "outcome": outcome, "time": O.time, "steps": O.iter})
     print(f"tilt {state['tilt']:.1f} deg: {outcome}", flush=True)
     series.snapshot()

@@ -20,6 +20,10 @@ def test_layout_outline_columns_and_joints():
     cross = layout.cross_joints([1, 2, 3], spacing=0.04, phases=[0.0, 0.0, 0.01])
     # column 1 stands free downhill: no joints; column 2 leans on column 1 up to 0.1 m; column 3 on 2 up to 0.2 m
     assert sorted(y for _, y in cross.segmentStarts) == pytest.approx([0.01, 0.04, 0.05, 0.08, 0.09, 0.13, 0.17])
+    on_table = layout.cross_joints([1, 2], spacing=0.04, phases=[0.0, 0.0], base=0.005)
+    assert sorted(y for _, y in on_table.segmentStarts) == pytest.approx([0.005, 0.04, 0.08])  # column 1: none
+    with pytest.raises(ValueError, match="base"):
+        layout.cross_joints([2], 0.04, [0.0], base=-0.01)
     with pytest.raises(ValueError, match="width"):
         columns.ColumnLayout(0.1, 0.0, [0.1])
     with pytest.raises(ValueError, match="spacing"):
@@ -39,6 +43,35 @@ def test_stage_ends_in_equilibrium_below_and_fails_above_the_joint_friction(empt
     watched = setup.block
     criteria = tilting.StageCriteria(chunk=0.02, rest_speed=1e-3, fail_displacement=2e-3, max_stage_time=0.3)
     assert tilting.run_stage(tilt, watched, tilting.positions(watched), criteria) == expected
+
+
+def _along_slope_response(load) -> tuple[float, float]:
+    """(peak, static) displacement along the table of a block on a joint under ``load``."""
+    setup = incline.build(0.1, 0.05, 0.012 / 2.5, 0.012, ROCK, math.degrees(math.atan(0.4)))
+    incline.settle(0.02)  # at rest under upright gravity
+
+    def centre() -> float:
+        return float(tilting.positions(setup.block)[:, 0].mean())
+
+    start, peak = centre(), 0.0
+    load()
+    for _ in range(200):
+        O.run(5, True)
+        peak = max(peak, centre() - start)
+    incline.settle(0.05)
+    return peak, centre() - start
+
+
+def test_ramped_tilt_loads_statically_and_a_sudden_tilt_twice(empty_scene):
+    """A step load overshoots its static response by a factor 2 (undamped single degree of
+    freedom); the same tilt applied over many periods (~9 ms here) does not."""
+    tilt = 10.0  # well below the joint's 21.8 deg: elastic
+    ramp_peak, static = _along_slope_response(lambda: tilting.ramp(0.0, tilt, 0.05))
+    assert ramp_peak / static == pytest.approx(1.0, abs=0.05)
+    assert tilting.current_tilt() == pytest.approx(tilt)
+    O.reset()
+    jump_peak, _ = _along_slope_response(lambda: tilting.set_tilt(tilt))
+    assert jump_peak / static == pytest.approx(2.0, abs=0.15)
 
 
 def test_checkpoint_resumes_scene_and_driver_state(empty_scene, tmp_path):
@@ -67,3 +100,5 @@ def test_missing_checkpoint_says_what_to_do(tmp_path):
 def test_bad_stage_criteria_are_refused():
     with pytest.raises(ValueError, match="rest_speed"):
         tilting.StageCriteria(rest_speed=0)
+    with pytest.raises(ValueError, match="duration"):
+        tilting.ramp(0.0, 10.0, 0.0)
