@@ -20,14 +20,15 @@ surface y = 0, columns standing along +y, the toe at the right, the slope to the
   column centre (a stepped face).
 * Main joints between all columns (Table 5-3 "joint"). Cross joints ("base joints", Table 5-3)
   every 10 cm (the block length). Ideal arrangement: in every other column starting at the toe
-  (blocky potential, "freedom at its end", §5.2.4.1), plus one at the table (the top of the
-  fixed layer, Rmax): these columns stand on the table; the columns between are continuous and
-  held by the table (flexural potential, "the fixing block at its pivot point"). Random
-  arrangement: in every column at a random offset (seeded), i.e. blocks stacked with random
-  staggering, each column's lowest block held by the table (with every column free on the
-  table, nothing but the toe column's bonds would hold the model beyond atan 0.2 = 11 deg;
-  it fails there, measured). A column that leans on no downhill neighbour (the toe column)
-  has no cross joint: a free block on a mu 0.23 joint would slide off at 13 deg.
+  (blocky potential, "freedom at its end", §5.2.4.1; "the other with flexural failure potential
+  due to its lack of joint base", §5.3.2), the lowest one, the blocky column's base, on a plane
+  rising from the toe at DESIGN_PLANE_DEG = 15 deg to the table, as in the slope model the
+  arrangement copies (Amini et al. 2012, Figs 5-13/5-14: blocky columns rest on the overall
+  failure plane, flexural columns cross it); the columns between are continuous. Standing the
+  blocky columns on the table instead makes the model fail at 36 deg along a surface at 36 deg
+  (measured). Random arrangement: in every column at a random offset (seeded), i.e. blocks
+  stacked with random staggering. A column that leans on no downhill neighbour (the toe
+  column) has no cross joint: a free block on a mu 0.23 joint would slide off at 13 deg.
 * Micro-parameters: Tables 5-2 and 5-3, except the porosity (0.18: the packer does not lock in
   overlap, see README) and what the calibration below changes.
 
@@ -72,6 +73,7 @@ from yade.params import table  # noqa: E402  (filled by readParamsFromTable)
 
 WIDTH, BLOCK_LENGTH, T, COLUMNS = 0.05, 0.10, 0.047, 15
 FACE_DEG, TOP_DEG, CREST = 47.0, 27.0, 0.350  # to the table; crest height [m] (see above)
+DESIGN_PLANE_DEG = 15.0  # the ideal arrangement's blocky columns have their base joints on this plane
 TABLE_5_2 = {  # what differs between the two models
     "ideal": dict(young=15.05e6, knKs=1.3, bondTensileStrength=209e3),
     "random": dict(young=15.9e6, knKs=1.8, bondTensileStrength=159e3),
@@ -108,7 +110,8 @@ def profile(d: float) -> float:
 def cross_joint_columns(layout: columns.ColumnLayout) -> tuple[list[int], list[float]]:
     if table.arrangement == "ideal":
         blocky = list(range(1, layout.count + 1, 2))
-        return blocky, [0.0] * len(blocky)
+        plane = math.tan(math.radians(DESIGN_PLANE_DEG))
+        return blocky, [plane * (k - 0.5) * WIDTH for k in blocky]
     every = list(range(1, layout.count + 1))
     return every, list(np.random.default_rng(table.seed).uniform(0, BLOCK_LENGTH, len(every)))
 
@@ -132,8 +135,7 @@ def build() -> columns.ColumnLayout:
     base = SmoothJointMat(normalStiffness=kn_base, shearStiffness=kn_base,
                           frictionAngle=math.atan(mu_base), gap=gap, thickness=T)
     blocky, phases = cross_joint_columns(layout)
-    standing = table.rmax if table.arrangement == "ideal" else 0.0  # blocky columns stand on the table
-    joints.install_joints([(layout.main_joints(), main), (layout.cross_joints(blocky, BLOCK_LENGTH, phases, base=standing), base)],
+    joints.install_joints([(layout.main_joints(), main), (layout.cross_joints(blocky, BLOCK_LENGTH, phases), base)],
                           lo=(-1, -1), hi=(layout.toe_x + 1, 1))
     return layout
 

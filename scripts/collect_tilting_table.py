@@ -26,16 +26,17 @@ def main(folder: str) -> None:
         inputs = s["inputs"]
         tilt = fmt(s["failure_tilt_deg"]) if s["failure_tilt_deg"] is not None else \
             f"none up to {fmt(s.get('stable_up_to_deg'))}"
+        stable = [stage["tilt"] for stage in s["stages"] if stage["outcome"] == "equilibrium"]
         rows.append(f"| {os.path.basename(os.path.dirname(path))} | {inputs['arrangement']} | "
                     f"{1e3 * inputs['rmin']:g}–{1e3 * inputs['rmax']:g} | {s['discs']} | "
-                    f"{tilt} | {fmt(s['thesis']['failure_tilt_deg'])} | {fmt(s['phi_deg'])} | "
+                    f"{fmt(max(stable)) if stable else '-'} | {tilt} | {fmt(s['thesis']['failure_tilt_deg'])} | {fmt(s['phi_deg'])} | "
                     f"{fmt(s['thesis']['phi_deg'])} | {fmt(s['s_over_h'], 2)} | {fmt(s['t_over_h'], 2)} | "
                     f"{s['tensile_breaks']} / {s['shear_breaks']} | {s['wall_time']:.0f} |")
     if not rows:
         sys.exit(f"no {folder}/*/summary.json: run the tilting_table batch first (see README)")
-    print("| run | arrangement | R (mm) | discs | failure tilt (°) | thesis (°) | φ (°) | thesis φ (°) | S/H | T/H "
+    print("| run | arrangement | R (mm) | discs | last equilibrium (°) | failure tilt (°) | thesis (°) | φ (°) | thesis φ (°) | S/H | T/H "
           "| tensile / shear breaks | wall time (s) |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|---|")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     print("\n".join(rows))
 
 

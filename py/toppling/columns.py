@@ -65,29 +65,20 @@ class ColumnLayout:
         """Height up to which column k leans on its downhill neighbour (none for column 1)."""
         return 0.0 if k == 1 else min(self.heights[k - 1], self.heights[k - 2])
 
-    def cross_joints(self, columns: Sequence[int], spacing: float, phases: Sequence[float],
-                     base: float = 0.0) -> JointSetGeometry:
+    def cross_joints(self, columns: Sequence[int], spacing: float, phases: Sequence[float]) -> JointSetGeometry:
         """Joints across the given columns every ``spacing`` [m] up from ``phases[i]`` (block
         boundaries of stacked blocks), as explicit segments spanning each column, only where the
         column leans on its downhill neighbour: a block standing free above it would slide off
-        at atan(mu) of its joint, long before the column topples. ``base`` > 0: also a joint at
-        that height, the top of the fixed table layer, so the columns' lowest blocks stand on the
-        table instead of growing out of it."""
+        at atan(mu) of its joint, long before the column topples."""
         if spacing <= 0:
             raise ValueError(f"spacing = {spacing} is invalid: it must be > 0 m")
-        if base < 0:
-            raise ValueError(f"base = {base} is invalid: it must be >= 0 m")
         starts, ends = [], []
         for k, phase in zip(columns, phases):
             left, right = self.span(k)
-            heights = [base] if base > 0 else []
             y = phase
             while y < self.supported_height(k):
-                if y > base:
-                    heights.append(y)
-                y += spacing
-            for y in heights:
-                if y < self.supported_height(k):
+                if y > 0:
                     starts.append((left, y))
                     ends.append((right, y))
+                y += spacing
         return JointSetGeometry(dip=0, segmentStarts=starts, segmentEnds=ends)

@@ -20,10 +20,6 @@ def test_layout_outline_columns_and_joints():
     cross = layout.cross_joints([1, 2, 3], spacing=0.04, phases=[0.0, 0.0, 0.01])
     # column 1 stands free downhill: no joints; column 2 leans on column 1 up to 0.1 m; column 3 on 2 up to 0.2 m
     assert sorted(y for _, y in cross.segmentStarts) == pytest.approx([0.01, 0.04, 0.05, 0.08, 0.09, 0.13, 0.17])
-    on_table = layout.cross_joints([1, 2], spacing=0.04, phases=[0.0, 0.0], base=0.005)
-    assert sorted(y for _, y in on_table.segmentStarts) == pytest.approx([0.005, 0.04, 0.08])  # column 1: none
-    with pytest.raises(ValueError, match="base"):
-        layout.cross_joints([2], 0.04, [0.0], base=-0.01)
     with pytest.raises(ValueError, match="width"):
         columns.ColumnLayout(0.1, 0.0, [0.1])
     with pytest.raises(ValueError, match="spacing"):
