@@ -38,7 +38,8 @@ steadily at `tilt_rate` deg/s to `start_tilt` (a tilt switched on at once loads 
 dynamically, up to twice their static stress), then by `step` degrees per stage. Each stage
 runs in chunks of `chunk` seconds with local damping `damping` until
 
-* equilibrium: the fastest column top moves slower than `rest_speed`, or
+* equilibrium: the fastest column top (the centroid of the discs within 2 Rmax of the top: a
+  loose disc rattling is not a column moving) moves slower than `rest_speed`, or
 * failure: a column top has moved more than `fail_displacement` since the stage began
   (10 % of the column width by default: a column has clearly toppled or slid; the elastic
   response to one step is ~0.3 mm per degree), or it is still moving faster than `rest_speed`
@@ -150,6 +151,17 @@ def column_tops(layout: columns.ColumnLayout) -> list[int]:
     return tops
 
 
+def column_top_bands(layout: columns.ColumnLayout, depth: float) -> list[list[int]]:
+    """The discs within ``depth`` of each column's top: their centroid is what the stage
+    criteria watch."""
+    bands = []
+    for k in range(1, layout.count + 1):
+        top = layout.heights[k - 1]
+        bands.append([b.id for b in O.bodies if b is not None and layout.column_of(b.state.pos[0]) == k
+                      and b.state.pos[1] > top - depth])
+    return bands
+
+
 # ---- build or resume ----
 checkpoint = monitor.Checkpoint(table.out)
 if table.resume:
@@ -161,9 +173,10 @@ else:
     tops = column_tops(layout)
     ids = [b.id for b in O.bodies if b is not None]
     points = monitor.MonitoringPoints([analysis.column_label(k) for k in range(1, layout.count + 1)], tops)
-    state = {"layout": vars(layout), "ids": ids, "tilt": table.start_tilt, "failure_tilt": None,
+    state = {"layout": vars(layout), "ids": ids, "watched": column_top_bands(layout, 2 * table.rmax),
+             "tilt": table.start_tilt, "failure_tilt": None,
              "reference": tilting.positions(ids).tolist(), "stages": [], "energy": []}
-ids, tops = state["ids"], points.ids
+ids, tops, watched = state["ids"], points.ids, state["watched"]
 series = paraview.ParaViewSeries(f"{table.out}/paraview", joints.rock_functor().joints.blockOfBody, state.get("series"))
 progress = monitor.Progress()
 earlier_wall_time = state.get("wall_time", 0.0)  # of the runs this one resumes
@@ -187,11 +200,11 @@ def on_chunk() -> None:
 
 # ---- stand on the level table, tilt slowly to start_tilt, then in stages until a stage fails ----
 if not state["stages"]:
-    if tilting.run_stage(0.0, tops, tilting.positions(tops), criteria, on_chunk) == "failed":
+    if tilting.run_stage(0.0, watched, tilting.centroids(watched), criteria, on_chunk) == "failed":
         raise RuntimeError("the model does not stand on the level table: check the outline and the joints")
     tilting.ramp(0.0, table.start_tilt, table.start_tilt / table.tilt_rate, on_chunk)
 while state["failure_tilt"] is None and state["tilt"] <= table.max_tilt + 1e-9:
-    outcome = tilting.run_stage(state["tilt"], tops, tilting.positions(tops), criteria, on_chunk)
+    outcome = tilting.run_stage(state["tilt"], watched, tilting.centroids(watched), criteria, on_chunk)
     state["stages"].append({"tilt": state["tilt"], "outcome": outcome, "time": O.time, "steps": O.iter})
     print(f"tilt {state['tilt']:.1f} deg: {outcome}", flush=True)
     series.snapshot()

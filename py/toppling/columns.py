@@ -69,7 +69,9 @@ class ColumnLayout:
         """Joints across the given columns every ``spacing`` [m] up from ``phases[i]`` (block
         boundaries of stacked blocks), as explicit segments spanning each column, only where the
         column leans on its downhill neighbour: a block standing free above it would slide off
-        at atan(mu) of its joint, long before the column topples."""
+        at atan(mu) of its joint, long before the column topples; and none that would leave a
+        top piece shorter than half a block: the columns are built of whole blocks, a sliver
+        left on top falls off on its own and is not the slope failing."""
         if spacing <= 0:
             raise ValueError(f"spacing = {spacing} is invalid: it must be > 0 m")
         starts, ends = [], []
@@ -77,7 +79,7 @@ class ColumnLayout:
             left, right = self.span(k)
             y = phase
             while y < self.supported_height(k):
-                if y > 0:
+                if y > 0 and self.heights[k - 1] - y >= 0.5 * spacing:
                     starts.append((left, y))
                     ends.append((right, y))
                 y += spacing

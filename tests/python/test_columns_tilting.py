@@ -20,6 +20,8 @@ def test_layout_outline_columns_and_joints():
     cross = layout.cross_joints([1, 2, 3], spacing=0.04, phases=[0.0, 0.0, 0.01])
     # column 1 stands free downhill: no joints; column 2 leans on column 1 up to 0.1 m; column 3 on 2 up to 0.2 m
     assert sorted(y for _, y in cross.segmentStarts) == pytest.approx([0.01, 0.04, 0.05, 0.08, 0.09, 0.13, 0.17])
+    sliver = layout.cross_joints([3], spacing=0.04, phases=[0.03])  # 0.19 would leave 1 cm on top
+    assert sorted(y for _, y in sliver.segmentStarts) == pytest.approx([0.03, 0.07, 0.11, 0.15])
     with pytest.raises(ValueError, match="width"):
         columns.ColumnLayout(0.1, 0.0, [0.1])
     with pytest.raises(ValueError, match="spacing"):
@@ -36,9 +38,9 @@ def test_profile_layout_has_flat_tops_at_column_centres():
 def test_stage_ends_in_equilibrium_below_and_fails_above_the_joint_friction(empty_scene, tilt, expected):
     setup = incline.build(0.1, 0.05, 0.012 / 2.5, 0.012, ROCK, math.degrees(math.atan(0.4)))  # 21.8 deg
     O.engines[-1].damping = 0.5
-    watched = setup.block
+    watched = [setup.block]
     criteria = tilting.StageCriteria(chunk=0.02, rest_speed=1e-3, fail_displacement=2e-3, max_stage_time=0.3)
-    assert tilting.run_stage(tilt, watched, tilting.positions(watched), criteria) == expected
+    assert tilting.run_stage(tilt, watched, tilting.centroids(watched), criteria) == expected
 
 
 def _along_slope_response(load) -> tuple[float, float]:
