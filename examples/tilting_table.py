@@ -156,9 +156,11 @@ def column_top_bands(layout: columns.ColumnLayout, depth: float) -> list[list[in
     criteria watch."""
     bands = []
     for k in range(1, layout.count + 1):
-        top = layout.heights[k - 1]
-        bands.append([b.id for b in O.bodies if b is not None and layout.column_of(b.state.pos[0]) == k
-                      and b.state.pos[1] > top - depth])
+        members = [b for b in O.bodies if b is not None and layout.column_of(b.state.pos[0]) == k]
+        if not members:
+            raise RuntimeError(f"column {k} holds no discs: rmax = {table.rmax} m is too large for its size")
+        top = max(b.state.pos[1] for b in members)
+        bands.append([b.id for b in members if b.state.pos[1] > top - depth])
     return bands
 
 
