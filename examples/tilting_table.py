@@ -152,13 +152,16 @@ def column_tops(layout: columns.ColumnLayout) -> list[int]:
 
 
 def column_top_bands(layout: columns.ColumnLayout, depth: float) -> list[list[int]]:
-    """The discs within ``depth`` of each column's top: their centroid is what the stage
-    criteria watch."""
+    """The rock discs (>= 2 intact bonds) within ``depth`` of each column's top: their centroid
+    is what the stage criteria watch (a loose disc rolling off is not the column moving). A
+    column too small for the discs to bond (the toe column at R 2-8 mm) is not watched."""
     bands = []
     for k in range(1, layout.count + 1):
-        members = [b for b in O.bodies if b is not None and layout.column_of(b.state.pos[0]) == k]
+        members = [b for b in O.bodies if b is not None and layout.column_of(b.state.pos[0]) == k
+                   and bonding.intact_bonds(b.id) >= 2]
         if not members:
-            raise RuntimeError(f"column {k} holds no discs: rmax = {table.rmax} m is too large for its size")
+            print(f"column {analysis.column_label(k)}: no bonded discs (rmax = {table.rmax} m), not watched")
+            continue
         top = max(b.state.pos[1] for b in members)
         bands.append([b.id for b in members if b.state.pos[1] > top - depth])
     return bands

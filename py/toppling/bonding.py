@@ -79,3 +79,8 @@ def bond_within_gap(gap: float = 0.0, ids: Optional[Sequence[int]] = None) -> in
             count += 1
     limit_timestep()
     return count
+
+
+def intact_bonds(body_id: int) -> int:
+    """Number of intact parallel bonds of a disc."""
+    return sum(1 for i in O.bodies[body_id].intrs() if getattr(i.phys, "bondState", 0) == 1)

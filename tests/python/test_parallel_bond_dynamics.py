@@ -122,6 +122,7 @@ def test_bonding_after_settling_is_stress_free_and_limits_the_time_step(empty_sc
     dt_before = O.dt
     bonds = bonding.bond_within_gap(1e-6 * R)
     assert bonds == law.countBonds(1) > 50
+    assert sum(bonding.intact_bonds(b.id) for b in O.bodies) == 2 * bonds
     assert all(i.phys.bondNormalForce == 0 and i.phys.bondMoment == 0 for i in O.interactions if i.phys.bondState == 1)
     assert O.dt <= 0.5 * law.criticalTimeStep() * (1 + 1e-12) < dt_before  # bonds 20x stiffer than contacts
     O.run(2000, True)
