@@ -38,8 +38,8 @@ steadily at `tilt_rate` deg/s to `start_tilt` (a tilt switched on at once loads 
 dynamically, up to twice their static stress), then by `step` degrees per stage. Each stage
 runs in chunks of `chunk` seconds with local damping `damping` until
 
-* equilibrium: the fastest column top (the centroid of the discs within 2 Rmax of the top: a
-  loose disc rattling is not a column moving) moves slower than `rest_speed`, or
+* equilibrium: the fastest column top (the centroid of the bonded discs within 2 Rmax of the
+  top: a loose disc rattling is not a column moving) moves slower than `rest_speed`, or
 * failure: a column top has moved more than `fail_displacement` since the stage began
   (10 % of the column width by default: a column has clearly toppled or slid; the elastic
   response to one step is ~0.3 mm per degree), or it is still moving faster than `rest_speed`
@@ -141,29 +141,37 @@ def build() -> columns.ColumnLayout:
     return layout
 
 
-def column_tops(layout: columns.ColumnLayout) -> list[int]:
+def column_members(layout: columns.ColumnLayout) -> dict[int, list]:
+    """The discs of each column (1-based)."""
+    members = {k: [] for k in range(1, layout.count + 1)}
+    for b in O.bodies:
+        k = layout.column_of(b.state.pos[0]) if b is not None else 0
+        if k:
+            members[k].append(b)
+    return members
+
+
+def column_tops(layout: columns.ColumnLayout, members: dict[int, list]) -> list[int]:
     """The disc nearest the top centre of each column: its monitoring point."""
     tops = []
-    for k in range(1, layout.count + 1):
+    for k, discs in members.items():
         c = np.array(layout.top_centre(k))
-        members = [b.id for b in O.bodies if b is not None and layout.column_of(b.state.pos[0]) == k]
-        tops.append(min(members, key=lambda i: np.linalg.norm(np.array(tuple(O.bodies[i].state.pos)[:2]) - c)))
+        tops.append(min(discs, key=lambda b: np.linalg.norm(np.array(tuple(b.state.pos)[:2]) - c)).id)
     return tops
 
 
-def column_top_bands(layout: columns.ColumnLayout, depth: float) -> list[list[int]]:
+def column_top_bands(members: dict[int, list], depth: float) -> list[list[int]]:
     """The rock discs (>= 2 intact bonds) within ``depth`` of each column's top: their centroid
     is what the stage criteria watch (a loose disc rolling off is not the column moving). A
     column too small for the discs to bond (the toe column at R 2-8 mm) is not watched."""
     bands = []
-    for k in range(1, layout.count + 1):
-        members = [b for b in O.bodies if b is not None and layout.column_of(b.state.pos[0]) == k
-                   and bonding.intact_bonds(b.id) >= 2]
-        if not members:
+    for k, discs in members.items():
+        rock = [b for b in discs if bonding.intact_bonds(b.id) >= 2]
+        if not rock:
             print(f"column {analysis.column_label(k)}: no bonded discs (rmax = {table.rmax} m), not watched")
             continue
-        top = max(b.state.pos[1] for b in members)
-        bands.append([b.id for b in members if b.state.pos[1] > top - depth])
+        top = max(b.state.pos[1] for b in rock)
+        bands.append([b.id for b in rock if b.state.pos[1] > top - depth])
     return bands
 
 
@@ -175,10 +183,11 @@ if table.resume:
     points = monitor.MonitoringPoints.from_dict(state["points"])
 else:
     layout = build()
-    tops = column_tops(layout)
+    members = column_members(layout)
+    tops = column_tops(layout, members)
     ids = [b.id for b in O.bodies if b is not None]
     points = monitor.MonitoringPoints([analysis.column_label(k) for k in range(1, layout.count + 1)], tops)
-    state = {"layout": vars(layout), "ids": ids, "watched": column_top_bands(layout, 2 * table.rmax),
+    state = {"layout": vars(layout), "ids": ids, "watched": column_top_bands(members, 2 * table.rmax),
              "tilt": table.start_tilt, "failure_tilt": None,
              "reference": tilting.positions(ids).tolist(), "stages": [], "energy": []}
 ids, tops, watched = state["ids"], points.ids, state["watched"]
@@ -205,8 +214,10 @@ def on_chunk() -> None:
 
 # ---- stand on the level table, tilt slowly to start_tilt, then in stages until a stage fails ----
 if not state["stages"]:
+    level_start = O.time
     if tilting.run_stage(0.0, watched, tilting.centroids(watched), criteria, on_chunk) == "failed":
         raise RuntimeError("the model does not stand on the level table: check the outline and the joints")
+    print(f"level table: equilibrium after {O.time - level_start:.3f} s", flush=True)
     tilting.ramp(0.0, table.start_tilt, table.start_tilt / table.tilt_rate, on_chunk)
 while state["failure_tilt"] is None and state["tilt"] <= table.max_tilt + 1e-9:
     outcome = tilting.run_stage(state["tilt"], watched, tilting.centroids(watched), criteria, on_chunk)

@@ -15,7 +15,6 @@ from yade.wrapper import JointSetGeometry, ParallelBondMat, SmoothJointMat
 from toppling import bonding, geometry, joints, packing, scene, tilting
 
 
-
 @dataclass
 class BlockOnBase:
     block: list          # ids of the block's discs
