@@ -51,6 +51,10 @@ so the failure surface develops, and toppling.analysis finds it (failure points 
 columns, fitted surface(s), phi), the zones, S/H and T/H, from the displacements since the last
 equilibrium and the cracks.
 
+A checkpoint is saved after every stage and every `checkpoint_every` wall seconds (a stage of
+the fine packing runs for hours); `resume=1` continues from it, in the middle of the level
+stage, the ramp, a stage or the post-failure run alike.
+
     ./yade -x -j2 -n examples/tilting_table.py
     ./yade-batch -j1 --log='results/batch/@.log' examples/tilting_table.table examples/tilting_table.py
     ./yade-batch -j2 --lines 5,6 --log='results/batch/@.log' examples/tilting_table.table examples/tilting_table.py
@@ -69,7 +73,7 @@ from toppling import (analysis, bonding, boundary, columns, geometry, joints, mo
 readParamsFromTable(arrangement="ideal", rmin=1e-3, rmax=4e-3, porosity=0.18, seed=1, start_tilt=20.0, step=1.0,
                     max_tilt=45.0, tilt_rate=50.0, damping=0.7, chunk=0.02, rest_speed=1e-3, fail_displacement=5e-3,
                     max_stage_time=0.6, post_failure_time=0.3, bond_tensile_strength=0.0, main_joint_friction=0.0,
-                    resume=0, out="results/tilting_table", noTableOk=True)
+                    resume=0, checkpoint_every=600.0, out="results/tilting_table", noTableOk=True)
 from yade.params import table  # noqa: E402  (filled by readParamsFromTable)
 
 WIDTH, BLOCK_LENGTH, T, COLUMNS = 0.05, 0.10, 0.047, 15
@@ -88,6 +92,8 @@ TABLE_5_3 = {  # main joints (kn = ks [N/m3], mu), base joints (kn = ks, mu), ga
 }
 THESIS = {"ideal": dict(failure_tilt_deg=35, phi_deg=[15]), "random": dict(failure_tilt_deg=19, phi_deg=[14, 24])}
 
+if table.checkpoint_every <= 0:
+    raise ValueError(f"checkpoint_every = {table.checkpoint_every} is invalid: it must be > 0 (wall seconds)")
 if table.arrangement not in TABLE_5_2:
     raise ValueError(f"arrangement = {table.arrangement!r} is invalid: it must be 'ideal' or 'random'")
 # Calibration knobs the issue allows (0: the table's value); stay within the thesis' ranges,
@@ -194,6 +200,7 @@ ids, tops, watched = state["ids"], points.ids, state["watched"]
 series = paraview.ParaViewSeries(f"{table.out}/paraview", joints.rock_functor().joints.blockOfBody, state.get("series"))
 progress = monitor.Progress()
 earlier_wall_time = state.get("wall_time", 0.0)  # of the runs this one resumes
+last_save = progress.wall_time
 
 
 def wall_time() -> float:
@@ -201,8 +208,10 @@ def wall_time() -> float:
 
 
 def save_checkpoint() -> None:
+    global last_save
     state["points"], state["series"], state["wall_time"] = points.as_dict(), series.state(), wall_time()
     checkpoint.save(state)
+    last_save = progress.wall_time
 
 
 def on_chunk() -> None:
@@ -210,25 +219,43 @@ def on_chunk() -> None:
     state["energy"].append((O.time, state["tilt"], utils.kineticEnergy()))
     span = table.max_tilt - table.start_tilt
     progress(f"tilt {tilting.current_tilt():.1f} deg", (state["tilt"] - table.start_tilt) / span if span > 0 else None)
+    if progress.wall_time - last_save > table.checkpoint_every:  # a stage of a fine packing runs for hours
+        save_checkpoint()
+
+
+def begin(name: str, **extra) -> dict:
+    """Enter a phase of the run (level, ramp, stage, post); the checkpoint records it and when
+    it began, so that a resumed run continues it rather than starting it again."""
+    state["phase"] = dict(name=name, start=O.time, **extra)
+    return state["phase"]
+
+
+def run_stage(alpha: float, phase: dict) -> str:
+    return tilting.run_stage(alpha, watched, np.array(phase["reference"]), criteria, on_chunk, start=phase["start"])
 
 
 # ---- stand on the level table, tilt slowly to start_tilt, then in stages until a stage fails ----
-if not state["stages"]:
-    level_start = O.time
-    if tilting.run_stage(0.0, watched, tilting.centroids(watched), criteria, on_chunk) == "failed":
+phase = state.get("phase") or begin("level", reference=tilting.centroids(watched).tolist())
+if phase["name"] == "level":
+    if run_stage(0.0, phase) == "failed":
         raise RuntimeError("the model does not stand on the level table: check the outline and the joints")
-    print(f"level table: equilibrium after {O.time - level_start:.3f} s", flush=True)
-    tilting.ramp(0.0, table.start_tilt, table.start_tilt / table.tilt_rate, on_chunk)
+    print(f"level table: equilibrium after {O.time - phase['start']:.3f} s", flush=True)
+    phase = begin("ramp")
+if phase["name"] == "ramp":
+    tilting.ramp(0.0, table.start_tilt, table.start_tilt / table.tilt_rate, on_chunk, start=phase["start"])
+    phase = begin("stage", reference=tilting.centroids(watched).tolist())
 while state["failure_tilt"] is None and state["tilt"] <= table.max_tilt + 1e-9:
-    outcome = tilting.run_stage(state["tilt"], watched, tilting.centroids(watched), criteria, on_chunk)
+    outcome = run_stage(state["tilt"], phase)
     state["stages"].append({"tilt": state["tilt"], "outcome": outcome, "time": O.time, "steps": O.iter})
     print(f"tilt {state['tilt']:.1f} deg: {outcome}", flush=True)
     series.snapshot()
     if outcome == "failed":
         state["failure_tilt"] = state["tilt"]
+        phase = begin("post")
     else:
         state["reference"] = tilting.positions(ids).tolist()
         state["tilt"] += table.step
+        phase = begin("stage", reference=tilting.centroids(watched).tolist())
     save_checkpoint()
 
 if state["failure_tilt"] is None:
@@ -240,12 +267,13 @@ if state["failure_tilt"] is None:
                          steps=O.iter, simulated_time=O.time, wall_time=wall_time())
     print(f"no failure up to max_tilt = {table.max_tilt} deg: rerun with resume=1 and a higher max_tilt")
     raise SystemExit(0)
-if not state.get("post_failure_done"):
-    O.run(max(1, int(table.post_failure_time / O.dt)), True)  # let the failure surface develop
-    scene.check_stable("the post-failure run")
-    on_chunk()
+if phase["name"] == "post":  # let the failure surface develop
+    while O.time - phase["start"] < table.post_failure_time:
+        O.run(max(1, int(table.chunk / O.dt)), True)
+        scene.check_stable("the post-failure run")
+        on_chunk()
     series.snapshot()
-    state["post_failure_done"] = True
+    phase = begin("analysis")
     save_checkpoint()
 
 

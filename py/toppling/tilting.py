@@ -43,15 +43,16 @@ class StageCriteria:
 
 
 def ramp(from_deg: float, to_deg: float, duration: float, on_chunk: Optional[Callable[[], None]] = None,
-         update: float = 1e-3) -> None:
+         update: float = 1e-3, start: Optional[float] = None) -> None:
     """Turn gravity from ``from_deg`` to ``to_deg`` linearly over ``duration`` simulated seconds,
     in increments every ``update`` seconds: a large tilt applied at once would overshoot its
     static response (up to twice the stress, a dynamic load) and break bonds a slowly tilted
-    table never breaks. ``on_chunk`` is called about every 0.02 s."""
+    table never breaks. ``on_chunk`` is called about every 0.02 s. ``start``: the simulated time
+    the ramp began (now by default; a resumed run passes the checkpointed one)."""
     if duration <= 0 or update <= 0:
         raise ValueError(f"duration = {duration}, update = {update} are invalid: both must be > 0 s")
-    start, every = O.time, max(1, int(update / O.dt))
-    last_report = start
+    start = O.time if start is None else start
+    every, last_report = max(1, int(update / O.dt)), O.time
     while O.time - start < duration:
         set_tilt(from_deg + (to_deg - from_deg) * (O.time - start) / duration)
         O.run(every, True)
@@ -68,12 +69,14 @@ def centroids(groups: Sequence[Sequence[int]]) -> np.ndarray:
 
 
 def run_stage(alpha_deg: float, watched: Sequence[Sequence[int]], reference: np.ndarray, criteria: StageCriteria,
-              on_chunk: Optional[Callable[[], None]] = None) -> str:
+              on_chunk: Optional[Callable[[], None]] = None, start: Optional[float] = None) -> str:
     """Tilt to ``alpha_deg`` and run until ``'equilibrium'`` or ``'failed'`` (see
     StageCriteria), judged on the centroids of the ``watched`` groups of discs (one loose disc
-    rattling must not count as a column moving) against their ``reference`` positions."""
+    rattling must not count as a column moving) against their ``reference`` positions.
+    ``start``: the simulated time the stage began (now by default; a resumed run passes the
+    checkpointed one, so max_stage_time counts the whole stage)."""
     set_tilt(alpha_deg)
-    start, before = O.time, centroids(watched)
+    start, before = O.time if start is None else start, centroids(watched)
     while True:
         O.run(max(1, int(criteria.chunk / O.dt)), True)
         scene.check_stable(f"the stage at {alpha_deg} deg")

@@ -72,6 +72,23 @@ def test_ramped_tilt_loads_statically_and_a_sudden_tilt_twice(empty_scene):
     assert jump_peak / static == pytest.approx(2.0, abs=0.15)
 
 
+def test_resumed_ramp_and_stage_continue_from_their_start(empty_scene):
+    """A run resumed from a checkpoint in the middle of a ramp or a stage passes the time the
+    ramp or stage began: the ramp goes on from where it was, the stage's time limit counts."""
+    setup = incline.build(0.1, 0.05, 0.012 / 2.5, 0.012, ROCK, math.degrees(math.atan(0.4)))  # 21.8 deg
+    incline.settle(0.02)
+    resumed_at = O.time
+    tilting.ramp(0.0, 10.0, 0.05, start=resumed_at - 0.03)  # 30 ms into a 50 ms ramp
+    assert O.time - resumed_at == pytest.approx(0.02, abs=1.5e-3)
+    assert tilting.current_tilt() == pytest.approx(10.0)
+    # sliding at 27 deg, never 1 m: only the time limit can end the stage, which began 0.3 s ago
+    criteria = tilting.StageCriteria(chunk=0.01, rest_speed=1e-3, fail_displacement=1.0, max_stage_time=0.3)
+    resumed_at = O.time
+    watched = [setup.block]
+    assert tilting.run_stage(27.0, watched, tilting.centroids(watched), criteria, start=O.time - 0.3) == "failed"
+    assert O.time - resumed_at == pytest.approx(criteria.chunk, rel=0.05)
+
+
 def test_checkpoint_resumes_scene_and_driver_state(empty_scene, tmp_path):
     setup = incline.build(0.1, 0.05, 0.012 / 2.5, 0.012, ROCK, 20.0)
     points = monitor.MonitoringPoints(["A-1"], [setup.toe])
