@@ -8,9 +8,12 @@ face), y along the main joints, pointing up; columns (bands between main joints)
 Definitions (thesis §5.2.4.3, §5.3.3.2; its Fig 5-24 is not in the text, so S and T are our
 reading of it):
 
-* failure point of a column: the height (y) where the column's discs change from "not
-  moved" below to "moved" above (a step fitted to the displacement magnitudes), moved to the
-  median of the cracks (broken bonds) within ``band`` of it when there are any;
+* failure point of a column: the height (y) below which its discs stay put and above which
+  they move as a broken-off part: displacement magnitudes fitted by zero below a cut and a
+  straight line above it (a jump for a sliding part, a ramp from zero for a part rotating
+  about a hinge at the cut; a threshold on the magnitudes would put a hinge too high by
+  the threshold over the rotation), moved to the median of the cracks (broken bonds) within
+  ``band`` of it when there are any;
 * failure surface: a line fitted through the columns' failure points; two lines (split at
   the best break point, each through >= 3 points) when that lowers the squared residual by
   ``split_gain`` and the two angles differ by >= ``min_angle_difference``; phi is the angle
@@ -51,19 +54,36 @@ def rotation_deg(before: np.ndarray, after: np.ndarray) -> float:
     return math.degrees(math.atan2(np.sum(p[:, 0] * q[:, 1] - p[:, 1] * q[:, 0]), np.sum(p * q)))
 
 
+def _suffix_sums(values: np.ndarray) -> np.ndarray:
+    """Sums of ``values[k:]`` for k = 0..n (the last is 0)."""
+    return np.concatenate((np.cumsum(values[::-1])[::-1], [0.0]))
+
+
+def hinge_cut(y: np.ndarray, d: np.ndarray) -> int:
+    """Index k into ascending heights ``y`` that best splits displacement magnitudes ``d`` into
+    zero below (d[:k]) and a straight line in y from k on: least squares over all k, each in
+    O(1) from prefix and suffix sums."""
+    n, s_y, s_yy = _suffix_sums(np.ones_like(y)), _suffix_sums(y), _suffix_sums(y * y)
+    s_d, s_dy, s_dd = _suffix_sums(d), _suffix_sums(d * y), _suffix_sums(d * d)
+    det = n * s_yy - s_y * s_y
+    safe = np.where(det > 1e-12 * np.maximum(n * s_yy, 1e-300), det, np.inf)  # one height: a constant
+    line = np.where(np.isfinite(safe), (s_yy * s_d * s_d - 2 * s_y * s_d * s_dy + n * s_dy * s_dy) / safe,
+                    s_d * s_d / np.maximum(n, 1))  # explained by the best line (or constant)
+    below = np.concatenate(([0.0], np.cumsum(d * d)))  # discs below the cut should not move
+    return int(np.argmin(below + s_dd - line))
+
+
 def failure_point(pos: np.ndarray, disp: np.ndarray, moved_threshold: float,
                   cracks: Optional[np.ndarray] = None, band: float = 0.0) -> Optional[tuple[float, float]]:
     """(x, y) where a column's discs (positions ``pos`` before, displacements ``disp``) change
-    from unmoved below to moved above; None if none moved. ``cracks``: crack positions."""
-    moved = np.linalg.norm(disp, axis=1) > moved_threshold
-    if not moved.any():
+    from unmoved below to moving as a part above (see the module's definitions); None if no
+    disc moved more than ``moved_threshold``. ``cracks``: crack positions."""
+    magnitude = np.linalg.norm(disp, axis=1)
+    if not (magnitude > moved_threshold).any():
         return None
     order = np.argsort(pos[:, 1])
-    y, m = pos[order, 1], moved[order]
-    # agreement of a cut before index k: unmoved below it + moved from it on
-    below_unmoved = np.concatenate(([0], np.cumsum(~m)))
-    above_moved = np.concatenate((np.cumsum(m[::-1])[::-1], [0]))
-    k = int(np.argmax(below_unmoved + above_moved))
+    y, d = pos[order, 1], magnitude[order]
+    k = hinge_cut(y, d)
     cut = y[0] if k == 0 else (y[-1] if k == len(y) else 0.5 * (y[k - 1] + y[k]))
     if cracks is not None and len(cracks) and band > 0:
         x_lo, x_hi = pos[:, 0].min(), pos[:, 0].max()

@@ -72,6 +72,24 @@ def test_cracks_refine_the_failure_point():
     assert x == pytest.approx(-0.025, abs=1e-3)
 
 
+def test_hinge_of_a_rotating_column_under_elastic_noise():
+    """A column toppling 2 degrees about a hinge at 0.1 m, every disc also jittered by up to
+    0.2 mm (elastic response): the failure point is the hinge, not where the displacement
+    passes a threshold (a fifth of the top's 14 mm would put it at 0.18 m)."""
+    pos, disp, _ = columns_cut_by(lambda x: 0.1, n_columns=1)
+    disp = disp + np.random.default_rng(5).uniform(-2e-4, 2e-4, disp.shape)
+    top = np.linalg.norm(disp, axis=1).max()
+    _, y = analysis.failure_point(pos, disp, moved_threshold=0.2 * top)
+    assert y == pytest.approx(0.1, abs=0.004)  # the disc spacing
+
+
+def test_failure_point_of_a_sliding_part_is_its_base():
+    pos = np.array([(0.0, y) for y in np.linspace(0, 0.3, 61)])
+    disp = np.where(pos[:, 1:] > 0.17, [[0.01, 0.0]], [[0.0, 0.0]])  # the part above 0.17 m slid 1 cm
+    _, y = analysis.failure_point(pos, disp, moved_threshold=1e-3)
+    assert y == pytest.approx(0.1725)  # between the discs at 0.170 and 0.175
+
+
 def test_unmoved_column_has_no_failure_point():
     pos = np.array([(0.0, y) for y in np.linspace(0, 0.3, 20)])
     assert analysis.failure_point(pos, np.zeros_like(pos), 1e-5) is None
