@@ -259,9 +259,12 @@ namespace toppling {
 		Real sum   = 0;
 		int  bonds = 0;
 		for (const auto& idAndInteraction : body.intrs) {
-			const Interaction& I    = *idAndInteraction.second;
-			const auto*        bond = dynamic_cast<const ParallelBondPhys*>(I.phys.get());
-			if (!bond || !bond->isBonded()) continue;
+			const Interaction& I = *idAndInteraction.second;
+			// A class-index test, not a dynamic_cast: this runs for every bond of both discs of
+			// every joint contact at every re-turn, where dynamic_cast took a third of the step.
+			if (!I.phys || I.phys->getClassIndex() != ParallelBondPhys::getClassIndexStatic()) continue;
+			const auto* bond = static_cast<const ParallelBondPhys*>(I.phys.get());
+			if (!bond->isBonded()) continue;
 			const Vector3r  d  = (*scene.bodies)[I.getId2()]->state->pos - (*scene.bodies)[I.getId1()]->state->pos;
 			const Vector3r& d0 = bond->bondDirection0;
 			sum += math::atan2(d0.x() * d.y() - d0.y() * d.x(), d0.dot(d));

@@ -148,6 +148,11 @@ Real SmoothJointPhys::elasticEnergy() const { return toppling::springEnergy(join
 
 /********************** Law2 **********************/
 
+void Law2_ScGeom_SmoothJointPhys_SmoothJoint::postLoad(Law2_ScGeom_SmoothJointPhys_SmoothJoint&)
+{
+	toppling::require("Law2_ScGeom_SmoothJointPhys_SmoothJoint", "turnInterval", turnInterval, toppling::Range::atLeastOne());
+}
+
 bool Law2_ScGeom_SmoothJointPhys_SmoothJoint::go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip, Interaction* I)
 {
 	auto&       geom = *static_cast<ScGeom*>(ig.get());
@@ -162,7 +167,7 @@ bool Law2_ScGeom_SmoothJointPhys_SmoothJoint::go(shared_ptr<IGeom>& ig, shared_p
 	}
 	if (!phys.isBonded() && geom.penetrationDepth < phys.releasePenetration) return false; // slid or opened apart
 	Real turn = 0;
-	if (toppling::pairTurn(b1, b2, *scene, turn)) phys.jointNormal = toppling::rotatedZ(phys.jointNormal0, turn);
+	if (scene->iter % turnInterval == 0 && toppling::pairTurn(b1, b2, *scene, turn)) phys.jointNormal = toppling::rotatedZ(phys.jointNormal0, turn);
 	const Vector3r n  = phys.jointNormal;
 	const Vector3r t  = Vector3r::UnitZ().cross(n);
 	const Vector3r du = vRel * scene->dt;

@@ -132,6 +132,7 @@ REGISTER_SERIALIZABLE(SmoothJointPhys);
 class Law2_ScGeom_SmoothJointPhys_SmoothJoint : public BreakingLaw {
 public:
 	bool go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip, Interaction* I) override;
+	void postLoad(Law2_ScGeom_SmoothJointPhys_SmoothJoint&);
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(Law2_ScGeom_SmoothJointPhys_SmoothJoint, BreakingLaw,
 		"Smooth-joint law (Pierce 2007, Mas Ivars 2011; PFC2D). The relative displacement of the contact point is "
@@ -145,8 +146,13 @@ public:
 		"The normal turns with the rock on both sides: by the mean turn of the two discs' intact parallel bonds since "
 		"they were installed (:yref:`ParallelBondPhys.bondDirection0`), not by the discs' own spin, which for a disc "
 		"loose in a pore is meaningless; a disc counts only with at least two intact bonds, and the normal stays put "
-		"while neither disc counts.",
-		/*attrs*/,
+		"while neither disc counts. The turn is updated every :yref:`turnInterval<Law2_ScGeom_SmoothJointPhys_SmoothJoint.turnInterval>` "
+		"steps.",
+		((int, turnInterval, 10, Attr::triggerPostLoad, "Steps between updates of the joint normal's turn (>= 1). The rock "
+			"turns by its angular velocity times dt per step (1e-5 rad at 10 rad/s and dt = 1e-6 s), so a normal that "
+			"lags by a few steps is exact far below the overlap's precision, while each update costs an atan2 per "
+			"bond of both discs: updating every step took a quarter of the step of the tilting-table model."))
+		,
 		/*ctor*/,
 		/*py*/
 	);

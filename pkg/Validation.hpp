@@ -22,6 +22,7 @@ namespace toppling {
 		}
 		static Range positive() { return { 0, std::numeric_limits<Real>::infinity(), true, false, "> 0" }; }
 		static Range nonNegative() { return { 0, std::numeric_limits<Real>::infinity(), false, false, ">= 0" }; }
+		static Range atLeastOne() { return { 1, std::numeric_limits<Real>::infinity(), false, false, ">= 1" }; }
 		static Range dampingRatio() { return { 0, 1, false, true, "in [0, 1)" }; }
 		static Range angle() { return { 0, Real(M_PI / 2), false, true, "in [0, pi/2) rad" }; }
 	};

@@ -5,7 +5,7 @@ import numpy
 import pytest
 from lattice import R, material
 from yade import O, Quaternion
-from yade.wrapper import JointSetGeometry, SmoothJointMat
+from yade.wrapper import JointSetGeometry, Law2_ScGeom_SmoothJointPhys_SmoothJoint, SmoothJointMat
 
 from toppling import bonding, joints, scene, tilting
 
@@ -94,6 +94,10 @@ def test_friction_holds_below_and_slides_above_friction_angle(empty_scene, phi):
     creep = max(abs(O.bodies[i].state.pos[0] - x) for i, x in zip(block, start))
     assert creep < 0.01 * R  # elastic shear only
     tilt(phi + 4)
+    # The sudden tilt is a step load: the block rings on its joint springs for the first few
+    # thousand steps, which moves a parabola fitted then by up to 1.5 % either way depending on
+    # the settling history alone (measured); the closed form is the sliding that follows.
+    O.run(4000, True)
     a = math.radians(phi + 4)
     expected = G * (math.sin(a) - math.tan(math.radians(phi)) * math.cos(a))
     assert acceleration(block) == pytest.approx(expected, rel=0.005)
@@ -149,3 +153,10 @@ def test_block_slides_diameters_with_load_passing_from_pair_to_pair(empty_scene)
     joint_contacts = [I for I in O.interactions if type(I.phys).__name__ == "SmoothJointPhys"]
     assert 0 < len(joint_contacts) <= 2 * 8
     assert min(I.geom.penetrationDepth for I in joint_contacts) > -0.05 * R
+
+
+
+def test_bad_turn_interval_is_rejected():
+    law = Law2_ScGeom_SmoothJointPhys_SmoothJoint()
+    with pytest.raises(ValueError, match=r"Law2_ScGeom_SmoothJointPhys_SmoothJoint.turnInterval = 0 .*>= 1"):
+        law.turnInterval = 0

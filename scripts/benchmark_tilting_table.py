@@ -1,0 +1,61 @@
+"""Benchmark: what a tilting-table run costs at a given packing.
+
+Builds the tilting-table model of examples/tilting_table.py (its own build(), so the scene is
+the one the example runs) at the radii given, lets gravity load the joints (the time step
+sees them once they carry force), then times the step, three times. Prints a Markdown row:
+discs, interactions, dt, steps per second and simulated seconds per wall hour, which with the
+2-3 s a run simulates says how long a packing takes.
+
+    ./yade -x -n -j1 scripts/benchmark_tilting_table.py [rmin rmax [arrangement]]
+"""
+import os
+import sys
+import tempfile
+import time
+
+from yade import O
+
+EXAMPLE = os.path.join(os.environ["TOPPLING_REPO"], "examples", "tilting_table.py")  # set by the ./yade launcher
+MARKER = "# ---- build or resume ----"  # the example's definitions end here, its run starts
+WARM_UP, STEPS, REPEATS = 2000, 2000, int(os.environ.get("BENCH_REPEATS", "3"))
+
+
+def build(rmin: float, rmax: float, arrangement: str) -> None:
+    """The example's scene, without running it: its source up to MARKER, then its build()."""
+    source = open(EXAMPLE).read()
+    if MARKER not in source:
+        raise RuntimeError(f"{EXAMPLE} has no line {MARKER!r}: update this benchmark with the example")
+    with tempfile.NamedTemporaryFile("w", suffix=".table", delete=False) as f:
+        f.write(f"arrangement rmin rmax out\n'{arrangement}' {rmin} {rmax} '{tempfile.gettempdir()}/bench_tt'\n")
+    os.environ["YADE_BATCH"] = f"{f.name}:2"
+    namespace = {"__name__": "tilting_table"}
+    exec(compile(source.split(MARKER)[0], EXAMPLE, "exec"), namespace)
+    namespace["build"]()
+    os.unlink(f.name)
+
+
+def time_steps() -> dict:
+    O.run(WARM_UP, True)
+    rates = []
+    for _ in range(REPEATS):
+        start = time.time()
+        O.run(STEPS, True)
+        rates.append(STEPS / (time.time() - start))
+    rate = max(rates)  # the least disturbed by the rest of the machine
+    return dict(discs=sum(1 for b in O.bodies if b is not None), interactions=len(O.interactions), dt=O.dt,
+                rate=rate, per_hour=rate * O.dt * 3600)
+
+
+def main() -> None:
+    args = sys.argv[1:]
+    rmin, rmax = (float(args[0]), float(args[1])) if len(args) >= 2 else (2e-3, 8e-3)
+    arrangement = args[2] if len(args) >= 3 else "ideal"
+    print(f"tilting table, {arrangement}, R {1e3 * rmin:g}-{1e3 * rmax:g} mm, {O.numThreads} thread(s)")
+    build(rmin, rmax, arrangement)
+    r = time_steps()
+    print("| discs | interactions | dt (s) | steps/s | simulated s per wall hour |")
+    print("|---|---|---|---|---|")
+    print(f"| {r['discs']} | {r['interactions']} | {r['dt']:.2e} | {r['rate']:.0f} | {r['per_hour']:.2f} |")
+
+
+main()
