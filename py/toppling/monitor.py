@@ -51,11 +51,15 @@ class Checkpoint:
         return os.path.exists(self.scene_path) and os.path.exists(self.state_path)
 
     def save(self, state: dict[str, Any]) -> None:
-        O.save(self.scene_path)
-        tmp = self.state_path + ".tmp"
-        with open(tmp, "w") as f:
+        # Both written aside and then moved into place: a run killed while saving (a long run is
+        # stopped at any moment) leaves the previous checkpoint whole.
+        scene_tmp = self.scene_path.replace("checkpoint.", "checkpoint.saving.")
+        O.save(scene_tmp)
+        state_tmp = self.state_path + ".tmp"
+        with open(state_tmp, "w") as f:
             json.dump(state, f)
-        os.replace(tmp, self.state_path)  # never a half-written state next to a new scene
+        os.replace(scene_tmp, self.scene_path)
+        os.replace(state_tmp, self.state_path)
 
     def load(self) -> dict[str, Any]:
         if not self.exists():
