@@ -52,8 +52,10 @@ columns, fitted surface(s), phi), the zones, S/H and T/H, from the displacements
 equilibrium and the cracks.
 
 A checkpoint is saved after every stage and every `checkpoint_every` wall seconds (a stage of
-the fine packing runs for hours); `resume=1` continues from it, in the middle of the level
-stage, the ramp, a stage or the post-failure run alike.
+the fine packing runs for hours). Running the same command again continues from it, in the
+middle of the level stage, the ramp, a stage or the post-failure run alike, as long as the
+parameters are the same (except `resume`, `checkpoint_every` and `max_tilt`); `resume=0`
+starts afresh, `resume=1` continues whatever checkpoint is in `out`.
 
     ./yade -x -j2 -n examples/tilting_table.py
     ./yade-batch -j1 --log='results/batch/@.log' examples/tilting_table.table examples/tilting_table.py
@@ -73,7 +75,7 @@ from toppling import (analysis, bonding, boundary, columns, geometry, joints, mo
 readParamsFromTable(arrangement="ideal", rmin=1e-3, rmax=4e-3, porosity=0.18, seed=1, start_tilt=20.0, step=1.0,
                     max_tilt=45.0, tilt_rate=50.0, damping=0.7, chunk=0.02, rest_speed=1e-3, fail_displacement=5e-3,
                     max_stage_time=0.6, post_failure_time=0.3, bond_tensile_strength=0.0, main_joint_friction=0.0,
-                    resume=0, checkpoint_every=600.0, out="results/tilting_table", noTableOk=True)
+                    resume=-1, checkpoint_every=600.0, out="results/tilting_table", noTableOk=True)
 from yade.params import table  # noqa: E402  (filled by readParamsFromTable)
 
 WIDTH, BLOCK_LENGTH, T, COLUMNS = 0.05, 0.10, 0.047, 15
@@ -182,9 +184,12 @@ def column_top_bands(members: dict[int, list], depth: float) -> list[list[int]]:
 
 
 # ---- build or resume ----
+inputs = output.table_inputs(table)
 checkpoint = monitor.Checkpoint(table.out)
-if table.resume:
+if checkpoint.continues(inputs, table.resume, free=("resume", "checkpoint_every", "max_tilt")):
     state = checkpoint.load()
+    print(f"resuming {table.out} in its {state['phase']['name']} phase at {state['tilt']} deg "
+          "(resume=0 starts afresh)", flush=True)
     layout = columns.ColumnLayout(**state["layout"])
     points = monitor.MonitoringPoints.from_dict(state["points"])
 else:
@@ -193,7 +198,7 @@ else:
     tops = column_tops(layout, members)
     ids = [b.id for b in O.bodies if b is not None]
     points = monitor.MonitoringPoints([analysis.column_label(k) for k in range(1, layout.count + 1)], tops)
-    state = {"layout": vars(layout), "ids": ids, "watched": column_top_bands(members, 2 * table.rmax),
+    state = {"inputs": inputs, "layout": vars(layout), "ids": ids, "watched": column_top_bands(members, 2 * table.rmax),
              "tilt": table.start_tilt, "failure_tilt": None,
              "reference": tilting.positions(ids).tolist(), "stages": [], "energy": []}
 ids, tops, watched = state["ids"], points.ids, state["watched"]
@@ -265,7 +270,7 @@ if state["failure_tilt"] is None:
                          thesis=THESIS[table.arrangement], tensile_breaks=scene.bond_law().breakMode.count(2),
                          shear_breaks=scene.bond_law().breakMode.count(3), discs=len(ids), stages=state["stages"],
                          steps=O.iter, simulated_time=O.time, wall_time=wall_time())
-    print(f"no failure up to max_tilt = {table.max_tilt} deg: rerun with resume=1 and a higher max_tilt")
+    print(f"no failure up to max_tilt = {table.max_tilt} deg: run again with a higher max_tilt")
     raise SystemExit(0)
 if phase["name"] == "post":  # let the failure surface develop
     while O.time - phase["start"] < table.post_failure_time:

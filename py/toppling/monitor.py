@@ -61,6 +61,30 @@ class Checkpoint:
         os.replace(scene_tmp, self.scene_path)
         os.replace(state_tmp, self.state_path)
 
+    def continues(self, inputs: dict[str, Any], resume: int, free: Sequence[str] = ()) -> bool:
+        """Whether a run with parameters ``inputs`` continues this checkpoint rather than starting
+        afresh: ``resume`` = 1 yes, 0 no, -1 if there is one whose state's ``"inputs"`` are the
+        same (apart from the ``free`` ones, which may change between a run and its continuation),
+        so that running the same command again continues a stopped run."""
+        if resume not in (-1, 0, 1):
+            raise ValueError(f"resume = {resume} is invalid: it must be -1 (continue a run with the same "
+                             "parameters), 0 (start afresh) or 1 (continue the checkpoint)")
+        if resume != -1:
+            return bool(resume)
+        if not self.exists():
+            return False
+        with open(self.state_path) as f:
+            saved = json.load(f).get("inputs", {})
+
+        def fixed(d: dict[str, Any]) -> dict[str, Any]:
+            return {k: v for k, v in json.loads(json.dumps(d)).items() if k not in free}  # as stored
+
+        if fixed(saved) != fixed(inputs):
+            print(f"{os.path.dirname(self.state_path)}: its checkpoint is of a run with other parameters; "
+                  "starting afresh (resume=1 continues it)")
+            return False
+        return True
+
     def load(self) -> dict[str, Any]:
         if not self.exists():
             raise FileNotFoundError(f"no checkpoint in {os.path.dirname(self.scene_path)}: run without resume first")
