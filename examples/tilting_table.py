@@ -296,9 +296,12 @@ def analyse() -> dict:
     top_index = [ids.index(i) for i in tops]
     top_disp = np.linalg.norm(disp[top_index], axis=1)
     threshold = max(0.2 * top_disp.max(), 1e-4)
-    last = points.time[-1] - points.time[-2] if len(points.time) > 1 else math.inf
-    speeds = [abs(points.total(label)[-1] - points.total(label)[-2]) / last if len(points.time) > 1 else 0.0
-              for label in points.labels]  # over the last interval: the post-failure run
+    # mean speeds over the post-failure run (from the failed stage's end): a column still
+    # toppling keeps moving, one that only rattles does not
+    start = min(range(len(points.time)), key=lambda i: abs(points.time[i] - state["stages"][-1]["time"]))
+    span = points.time[-1] - points.time[start]
+    speeds = [abs(points.total(label)[-1] - points.total(label)[start]) / span if span > 0 else 0.0
+              for label in points.labels]
     zones, failure_points = [], []
     for k in range(1, layout.count + 1):
         members = column == k
