@@ -67,19 +67,20 @@ class ColumnLayout:
 
     def cross_joints(self, columns: Sequence[int], spacing: float, phases: Sequence[float]) -> JointSetGeometry:
         """Joints across the given columns every ``spacing`` [m] up from ``phases[i]`` (block
-        boundaries of stacked blocks), as explicit segments spanning each column, only where the
-        piece above leans on the downhill neighbour over at least half a block: a piece standing
-        free above its neighbour, or touching it only at a corner, slides off at atan(mu) of its
-        joint long before the column topples (measured: the top block of column G-7, touching
-        F-6 over 8 mm, slid at 28 deg). So no top piece is shorter than half a block either."""
+        boundaries of stacked blocks), as explicit segments spanning each column, only where
+        the piece above leans on the downhill neighbour over at least a quarter of a block, and
+        leaves no top piece shorter than half a block. A piece standing free above its
+        neighbour, touching it only at a corner, or a thin sliver on top slides off at atan(mu)
+        of its joint long before the column topples (measured: the top block of column G-7,
+        touching F-6 over 8 mm, and a 4 cm sliver on G-7, both slid off at 28 deg)."""
         if spacing <= 0:
             raise ValueError(f"spacing = {spacing} is invalid: it must be > 0 m")
         starts, ends = [], []
         for k, phase in zip(columns, phases):
             left, right = self.span(k)
             y = phase
-            while y <= self.supported_height(k) - 0.5 * spacing:
-                if y > 0:
+            while y <= self.supported_height(k) - 0.25 * spacing:
+                if y > 0 and self.heights[k - 1] - y >= 0.5 * spacing:
                     starts.append((left, y))
                     ends.append((right, y))
                 y += spacing

@@ -17,12 +17,12 @@ def test_layout_outline_columns_and_joints():
                                 (0.05, 0.2), (0.0, 0.2)] for c in p])
     assert [layout.column_of(x) for x in (0.14, 0.06, 0.01, 0.2, -0.01)] == [1, 2, 3, 0, 0]
     assert layout.main_joints().spacing == 0.05
-    cross = layout.cross_joints([1, 2, 3], spacing=0.04, phases=[0.0, 0.005, 0.01])
+    cross = layout.cross_joints([1, 2, 3], spacing=0.04, phases=[0.0, 0.015, 0.01])
     # column 1 stands free downhill: no joints; column 2 leans on column 1 up to 0.1 m, so not at
-    # 0.085 (the piece above would touch column 1 over 1.5 cm < half a block); column 3 on 2 up to 0.2 m
-    assert sorted(y for _, y in cross.segmentStarts) == pytest.approx([0.005, 0.01, 0.045, 0.05, 0.09, 0.13, 0.17])
-    sliver = layout.cross_joints([3], spacing=0.04, phases=[0.03])  # 0.19 would leave 1 cm on top
-    assert sorted(y for _, y in sliver.segmentStarts) == pytest.approx([0.03, 0.07, 0.11, 0.15])
+    # 0.095 (the piece above would touch column 1 over 5 mm < a quarter block); column 3 on 2 up to 0.2 m
+    assert sorted(y for _, y in cross.segmentStarts) == pytest.approx([0.01, 0.015, 0.05, 0.055, 0.09, 0.13, 0.17])
+    sliver = layout.cross_joints([3], spacing=0.04, phases=[0.025])  # 0.185 would leave 1.5 cm on top
+    assert sorted(y for _, y in sliver.segmentStarts) == pytest.approx([0.025, 0.065, 0.105, 0.145])
     with pytest.raises(ValueError, match="width"):
         columns.ColumnLayout(0.1, 0.0, [0.1])
     with pytest.raises(ValueError, match="spacing"):
