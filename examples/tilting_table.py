@@ -79,6 +79,7 @@ from toppling import (analysis, bonding, boundary, columns, geometry, joints, mo
 readParamsFromTable(arrangement="ideal", rmin=1e-3, rmax=4e-3, porosity=0.18, seed=1, start_tilt=20.0, step=1.0,
                     max_tilt=45.0, tilt_rate=50.0, damping=0.7, chunk=0.02, rest_speed=1e-3, fail_displacement=5e-3,
                     max_stage_time=0.6, post_failure_time=0.3, bond_tensile_strength=0.0, main_joint_friction=0.0,
+                    base_joint_friction=0.0,
                     resume=-1, checkpoint_every=600.0, out="results/tilting_table", noTableOk=True)
 from yade.params import table  # noqa: E402  (filled by readParamsFromTable)
 
@@ -104,11 +105,17 @@ if table.arrangement not in TABLE_5_2:
     raise ValueError(f"arrangement = {table.arrangement!r} is invalid: it must be 'ideal' or 'random'")
 # Calibration knobs the issue allows (0: the table's value); stay within the thesis' ranges,
 # bond tensile strength 13.5-209 kPa (Tables 5-1, 5-2), joint friction 0.15-0.23 (Table 5-3).
+if table.bond_tensile_strength and not 13.5e3 <= table.bond_tensile_strength <= 209e3:
+    raise ValueError(f"bond_tensile_strength = {table.bond_tensile_strength} is invalid: it must be 0 (Table 5-2) "
+                     "or in the thesis' range [13.5e3, 209e3] Pa")
 if table.bond_tensile_strength:
     TABLE_5_2[table.arrangement]["bondTensileStrength"] = table.bond_tensile_strength
-if table.main_joint_friction:
-    main_joints, base_joints, gap = TABLE_5_3[table.arrangement]
-    TABLE_5_3[table.arrangement] = ((main_joints[0], table.main_joint_friction), base_joints, gap)
+for name, value in (("main_joint_friction", table.main_joint_friction), ("base_joint_friction", table.base_joint_friction)):
+    if value and not 0.15 <= value <= 0.23:
+        raise ValueError(f"{name} = {value} is invalid: it must be 0 (Table 5-3) or in the thesis' range [0.15, 0.23]")
+main_joints, base_joints, gap = TABLE_5_3[table.arrangement]
+TABLE_5_3[table.arrangement] = ((main_joints[0], table.main_joint_friction or main_joints[1]),
+                                (base_joints[0], table.base_joint_friction or base_joints[1]), gap)
 criteria = tilting.StageCriteria(table.chunk, table.rest_speed, table.fail_displacement, table.max_stage_time)
 
 
