@@ -32,7 +32,7 @@ surface y = 0, columns standing along +y, the toe at the right, the slope to the
   and none that leaves a top piece shorter than half a block: a block free of its neighbour,
   touching it at a corner, or a thin sliver on a mu 0.23 joint slides off at 13 deg plus what
   the main joints' friction holds, long before the slope topples (measured: the top block of
-  column G-7, touching F-6 over 8 mm, and a 4 cm sliver on G-7 slid off at 28 deg).
+  column G-7, touching F-6 over 8 mm, slid at 28 deg, and so did a 4 cm sliver on G-7).
 * Micro-parameters: Tables 5-2 and 5-3, except the porosity (0.18: the packer does not lock in
   overlap, see README) and what the calibration below changes.
 

@@ -72,7 +72,7 @@ class ColumnLayout:
         leaves no top piece shorter than half a block. A piece standing free above its
         neighbour, touching it only at a corner, or a thin sliver on top slides off at atan(mu)
         of its joint long before the column topples (measured: the top block of column G-7,
-        touching F-6 over 8 mm, and a 4 cm sliver on G-7, both slid off at 28 deg)."""
+        touching F-6 over 8 mm, and a 4 cm sliver on G-7 both slid at 28 deg)."""
         if spacing <= 0:
             raise ValueError(f"spacing = {spacing} is invalid: it must be > 0 m")
         starts, ends = [], []
