@@ -2,7 +2,7 @@
 
 Builds the tilting-table model of examples/tilting_table.py (its own build(), so the scene is
 the one the example runs) at the radii given, lets gravity load the joints (the time step
-sees them once they carry force), then times the step, three times. Prints a Markdown row:
+sees them once they carry force), then times the step: best of BENCH_REPEATS (3). Prints a row:
 discs, interactions, dt, steps per second and simulated seconds per wall hour, which with the
 2-3 s a run simulates says how long a packing takes.
 
