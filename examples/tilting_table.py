@@ -113,14 +113,14 @@ if table.arrangement not in TABLE_5_2:
     raise ValueError(f"arrangement = {table.arrangement!r} is invalid: it must be 'ideal' or 'random'")
 # Calibration knobs the issue allows (0: the table's value); stay within the thesis' ranges,
 # bond tensile strength 13.5-209 kPa (Tables 5-1, 5-2), joint friction 0.15-0.23 (Table 5-3).
-if table.bond_tensile_strength and not 13.5e3 <= table.bond_tensile_strength <= 209e3:
-    raise ValueError(f"bond_tensile_strength = {table.bond_tensile_strength} is invalid: it must be 0 (Table 5-2) "
-                     "or in the thesis' range [13.5e3, 209e3] Pa")
+CALIBRATION_RANGES = {"bond_tensile_strength": (13.5e3, 209e3), "main_joint_friction": (0.15, 0.23),
+                      "base_joint_friction": (0.15, 0.23)}
+for name, (lo, hi) in CALIBRATION_RANGES.items():
+    value = getattr(table, name)
+    if value and not lo <= value <= hi:
+        raise ValueError(f"{name} = {value} is invalid: it must be 0 (the thesis' table) or in its range [{lo:g}, {hi:g}]")
 if table.bond_tensile_strength:
     TABLE_5_2[table.arrangement]["bondTensileStrength"] = table.bond_tensile_strength
-for name, value in (("main_joint_friction", table.main_joint_friction), ("base_joint_friction", table.base_joint_friction)):
-    if value and not 0.15 <= value <= 0.23:
-        raise ValueError(f"{name} = {value} is invalid: it must be 0 (Table 5-3) or in the thesis' range [0.15, 0.23]")
 main_joints, base_joints, gap = TABLE_5_3[table.arrangement]
 TABLE_5_3[table.arrangement] = ((main_joints[0], table.main_joint_friction or main_joints[1]),
                                 (base_joints[0], table.base_joint_friction or base_joints[1]), gap)
@@ -282,19 +282,22 @@ while state["failure_tilt"] is None and state["tilt"] <= table.max_tilt + 1e-9:
         phase = begin("stage", reference=tilting.centroids(watched).tolist())
     save_checkpoint()
 
+def run_record() -> dict:
+    """What every summary holds besides the failure: thesis targets, cracks, size and cost."""
+    modes = scene.bond_law().breakMode
+    return dict(thesis=THESIS[table.arrangement], tensile_breaks=modes.count(2), shear_breaks=modes.count(3),
+                discs=len(ids), stages=state["stages"], steps=O.iter, simulated_time=O.time, wall_time=wall_time())
+
+
 if state["failure_tilt"] is None:
     # stable throughout: say so in the summary (a sweep goes on), resumable with a higher max_tilt
-    output.write_summary(table.out, output.table_inputs(table), failure_tilt_deg=None,
-                         stable_up_to_deg=state["stages"][-1]["tilt"], phi_deg=[], s_over_h=None, t_over_h=None,
-                         thesis=THESIS[table.arrangement], tensile_breaks=scene.bond_law().breakMode.count(2),
-                         shear_breaks=scene.bond_law().breakMode.count(3), discs=len(ids), stages=state["stages"],
-                         steps=O.iter, simulated_time=O.time, wall_time=wall_time())
+    output.write_summary(table.out, inputs, failure_tilt_deg=None, stable_up_to_deg=state["stages"][-1]["tilt"],
+                         phi_deg=[], s_over_h=None, t_over_h=None, **run_record())
     print(f"no failure up to max_tilt = {table.max_tilt} deg: run again with a higher max_tilt")
     raise SystemExit(0)
 if phase["name"] == "post":  # let the failure surface develop
     while O.time - phase["start"] < table.post_failure_time:
-        O.run(max(1, int(table.chunk / O.dt)), True)
-        scene.check_stable("the post-failure run")
+        scene.run_checked(table.chunk, "the post-failure run")
         on_chunk()
     series.snapshot()
     phase = begin("analysis")
@@ -350,10 +353,8 @@ summary = dict(
     phi_deg=[p.phi_deg for p in result["planes"]],
     planes=len(result["planes"]), s_over_h=result["s_over_h"], t_over_h=result["t_over_h"],
     zones={analysis.column_label(k + 1): z for k, z in enumerate(result["zones"])},
-    failure_points=result["failure_points"], slope_height=result["height"], thesis=THESIS[table.arrangement],
-    tensile_breaks=law.breakMode.count(2), shear_breaks=law.breakMode.count(3), discs=len(ids),
-    stages=state["stages"], steps=O.iter, simulated_time=O.time, wall_time=wall_time())
-output.write_summary(table.out, output.table_inputs(table), **summary)
+    failure_points=result["failure_points"], slope_height=result["height"], **run_record())
+output.write_summary(table.out, inputs, **summary)
 
 radii = [O.bodies[i].shape.radius for i in ids]
 cracks = np.array([tuple(p)[:2] for p in law.breakPosition]).reshape(-1, 2)

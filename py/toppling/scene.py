@@ -104,6 +104,12 @@ def bond_law() -> Law2_ScGeom_ParallelBondPhys_ParallelBond:
     return functor(Law2_ScGeom_ParallelBondPhys_ParallelBond)
 
 
+def run_checked(seconds: float, what: str = "the run") -> None:
+    """Run ``seconds`` of simulated time (at least one step), then check_stable(what)."""
+    O.run(max(1, int(seconds / O.dt)), True)
+    check_stable(what)
+
+
 def check_stable(what: str = "the run") -> None:
     """Raise RuntimeError if a law stopped the run as unstable (a pair moved more than R/10 in
     one step or a force was not finite; the law printed which pair)."""

@@ -78,8 +78,7 @@ def run_stage(alpha_deg: float, watched: Sequence[Sequence[int]], reference: np.
     set_tilt(alpha_deg)
     start, before = O.time if start is None else start, centroids(watched)
     while True:
-        O.run(max(1, int(criteria.chunk / O.dt)), True)
-        scene.check_stable(f"the stage at {alpha_deg} deg")
+        scene.run_checked(criteria.chunk, f"the stage at {alpha_deg} deg")
         now = centroids(watched)
         speed = np.linalg.norm(now - before, axis=1).max() / criteria.chunk
         moved = np.linalg.norm(now - reference, axis=1).max()
