@@ -18,30 +18,33 @@ surface y = 0, columns standing along +y, the toe at the right, the slope to the
   column O-15, which agrees.
 * Rectangular blocks have flat tops: each column's top is at the outline's height at the
   column centre (a stepped face).
-* Main joints between all columns (Table 5-3 "joint"). Cross joints ("base joints", Table 5-3)
-  every 10 cm (the block length). Ideal arrangement: in every other column starting at the toe
-  (blocky potential, "freedom at its end", §5.2.4.1; "the other with flexural failure potential
-  due to its lack of joint base", §5.3.2), the lowest one, the blocky column's base, on a plane
-  rising from the toe at DESIGN_PLANE_DEG = 15 deg to the table, as in the slope model the
-  arrangement copies (Amini et al. 2012, Figs 5-13/5-14: blocky columns rest on the overall
-  failure plane, flexural columns cross it); the columns between are continuous. Standing the
-  blocky columns on the table instead makes the model fail at 36 deg along a surface at 36 deg
-  (measured). Random arrangement: in every column at a random offset (seeded), i.e. blocks
-  stacked with random staggering. Cross joints only where the block above leans on the
-  downhill neighbour column over at least a quarter of a block (so none in the toe column),
-  and none that leaves a top piece shorter than half a block: a block free of its neighbour,
-  touching it at a corner, or a thin sliver on a mu 0.23 joint slides off at 13 deg plus what
-  the main joints' friction holds, long before the slope topples (measured: the top block of
-  column G-7, touching F-6 over 8 mm, slid at 28 deg, and so did a 4 cm sliver on G-7).
+* Main joints between all columns (Table 5-3 "joint"). Ideal arrangement: one cross joint
+  (Table 5-3 "base joint") in every other column starting at the toe, the blocky column's
+  "joint base" (§5.3.2) that leaves it "divided into two parts" (§5.2.4.1); the columns between
+  are continuous ("flexural failure potential due to its lack of joint base"). One per column,
+  because the thesis' variants of this model (Tables 5-7, 5-8) merge pairs of base joints or
+  add a second, parallel base-joint set: the base model has one row of them. That row lies on a
+  plane rising from the toe at DESIGN_PLANE_DEG = 15 deg to the table, as in the slope model
+  the arrangement copies (Amini et al. 2012, Figs 5-13/5-14: blocky columns rest on the
+  overall failure plane, flexural columns cross it). Measured at R 2-8 mm, other layouts: the
+  blocky columns standing on the table fail at 36 deg along a surface at 36 deg; joints every
+  10 cm above the base joint (stacked blocks) let the top blocks topple on their own, failure
+  points at the upper joints (phi 45 deg). Random arrangement: blocks 10 cm long stacked in
+  every column with a random (seeded) offset. Cross joints only where the piece above leans on
+  the downhill neighbour column over at least a quarter of a block (so none in the toe
+  column), and none that leaves a top piece shorter than half a block: a block free of its
+  neighbour, touching it at a corner, or a thin sliver on a mu 0.23 joint slides off at 13 deg
+  plus what the main joints' friction holds, long before the slope topples (measured: the top
+  block of column G-7, touching F-6 over 8 mm, slid at 28 deg, and so did a 4 cm sliver on G-7).
 * Micro-parameters: Tables 5-2 and 5-3, except the porosity (0.18: the packer does not lock in
   overlap, see README) and what the calibration below changes.
 
 Calibration (the issue allows joint friction and bond strengths within the thesis' ranges;
 `bond_tensile_strength`, `main_joint_friction`, `base_joint_friction`, 0 = the tables' value):
-with Table 5-2's 209 kPa the reconstructed ideal model stands up to 44 deg (measured, R 2-8 mm),
-because its flexural columns run unbroken from the table to the top. The ideal rows of
-tilting_table.table use 159 kPa, the random model's own Table 5-2 value (measured at R 2-8 mm:
-equilibrium at 34, failure at 36 deg; 130 kPa: 32 and 34). The random model keeps Table 5-2.
+at R 2-8 mm, Table 5-2's 209 kPa let the ideal model stand up to 44 deg (measured with the
+stacked-block layout above); the ideal rows of tilting_table.table use 159 kPa, the random
+model's own Table 5-2 value (measured at R 2-8 mm with the layout described: equilibrium at 34,
+failure at 36 deg). The random model keeps Table 5-2.
 
 Loading: the discs within Rmax of the table are fixed in x and y (§5.2.4.2); gravity is turned
 by the tilt (Fig 5-7). The model first comes to rest on the level table, then the tilt rises
@@ -135,13 +138,13 @@ def profile(d: float) -> float:
     return CREST - (d - crest_distance) * math.tan(math.radians(TOP_DEG))
 
 
-def cross_joint_columns(layout: columns.ColumnLayout) -> tuple[list[int], list[float]]:
-    if table.arrangement == "ideal":
-        blocky = list(range(1, layout.count + 1, 2))
+def cross_joint_heights(layout: columns.ColumnLayout) -> dict[int, list[float]]:
+    """Where the cross joints cut each column (before the layout's rules drop the unsupported)."""
+    if table.arrangement == "ideal":  # one base joint per blocky column, on the design plane
         plane = math.tan(math.radians(DESIGN_PLANE_DEG))
-        return blocky, [plane * (k - 0.5) * WIDTH for k in blocky]
-    every = list(range(1, layout.count + 1))
-    return every, list(np.random.default_rng(table.seed).uniform(0, BLOCK_LENGTH, len(every)))
+        return {k: [plane * (k - 0.5) * WIDTH] for k in range(1, layout.count + 1, 2)}
+    phases = np.random.default_rng(table.seed).uniform(0, BLOCK_LENGTH, layout.count)
+    return {k: layout.stacked_blocks(k, BLOCK_LENGTH, phases[k - 1]) for k in range(1, layout.count + 1)}
 
 
 def build() -> columns.ColumnLayout:
@@ -162,8 +165,8 @@ def build() -> columns.ColumnLayout:
                           frictionAngle=math.atan(mu_main), gap=gap, thickness=T)
     base = SmoothJointMat(normalStiffness=kn_base, shearStiffness=kn_base,
                           frictionAngle=math.atan(mu_base), gap=gap, thickness=T)
-    blocky, phases = cross_joint_columns(layout)
-    joints.install_joints([(layout.main_joints(), main), (layout.cross_joints(blocky, BLOCK_LENGTH, phases), base)],
+    cross = layout.cross_joints(cross_joint_heights(layout), BLOCK_LENGTH)
+    joints.install_joints([(layout.main_joints(), main), (cross, base)],
                           lo=(-1, -1), hi=(layout.toe_x + 1, 1))
     return layout
 

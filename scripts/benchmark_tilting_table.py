@@ -10,28 +10,19 @@ discs, interactions, dt, steps per second and simulated seconds per wall hour, w
 """
 import os
 import sys
-import tempfile
 import time
 
 from yade import O
 
-EXAMPLE = os.path.join(os.environ["TOPPLING_REPO"], "examples", "tilting_table.py")  # set by the ./yade launcher
-MARKER = "# ---- build or resume ----"  # the example's definitions end here, its run starts
+sys.path.insert(0, os.path.join(os.environ["TOPPLING_REPO"], "scripts"))  # set by the ./yade launcher
+from tilting_table_model import definitions  # noqa: E402
+
 WARM_UP, STEPS, REPEATS = 2000, 2000, int(os.environ.get("BENCH_REPEATS", "3"))
 
 
 def build(rmin: float, rmax: float, arrangement: str) -> None:
-    """The example's scene, without running it: its source up to MARKER, then its build()."""
-    source = open(EXAMPLE).read()
-    if MARKER not in source:
-        raise RuntimeError(f"{EXAMPLE} has no line {MARKER!r}: update this benchmark with the example")
-    with tempfile.NamedTemporaryFile("w", suffix=".table", delete=False) as f:
-        f.write(f"arrangement rmin rmax out\n'{arrangement}' {rmin} {rmax} '{tempfile.gettempdir()}/bench_tt'\n")
-    os.environ["YADE_BATCH"] = f"{f.name}:2"
-    namespace = {"__name__": "tilting_table"}
-    exec(compile(source.split(MARKER)[0], EXAMPLE, "exec"), namespace)
-    namespace["build"]()
-    os.unlink(f.name)
+    """The example's scene, without running it: its build()."""
+    definitions(arrangement=f"'{arrangement}'", rmin=rmin, rmax=rmax)["build"]()
 
 
 def time_steps() -> dict:

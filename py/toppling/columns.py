@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Callable, Sequence
+from typing import Callable, Mapping, Sequence
 
 from yade.wrapper import JointSetGeometry
 
@@ -65,23 +65,32 @@ class ColumnLayout:
         """Height up to which column k leans on its downhill neighbour (none for column 1)."""
         return 0.0 if k == 1 else min(self.heights[k - 1], self.heights[k - 2])
 
-    def cross_joints(self, columns: Sequence[int], spacing: float, phases: Sequence[float]) -> JointSetGeometry:
-        """Joints across the given columns every ``spacing`` [m] up from ``phases[i]`` (block
-        boundaries of stacked blocks), as explicit segments spanning each column, only where
-        the piece above leans on the downhill neighbour over at least a quarter of a block, and
-        leaves no top piece shorter than half a block. A piece standing free above its
-        neighbour, touching it only at a corner, or a thin sliver on top slides off at atan(mu)
-        of its joint long before the column topples (measured: the top block of column G-7,
-        touching F-6 over 8 mm, and a 4 cm sliver on G-7 both slid at 28 deg)."""
-        if spacing <= 0:
-            raise ValueError(f"spacing = {spacing} is invalid: it must be > 0 m")
+    def stacked_blocks(self, k: int, length: float, phase: float) -> list[float]:
+        """Heights of the boundaries between blocks of ``length`` [m] stacked in column k, the
+        first at ``phase`` (0 <= phase < length; 0: the lowest block stands on the table)."""
+        if length <= 0:
+            raise ValueError(f"length = {length} is invalid: it must be > 0 m")
+        if not 0 <= phase < length:
+            raise ValueError(f"phase = {phase} is invalid: it must be in [0, {length}) m")
+        count = math.ceil((self.heights[k - 1] - phase) / length)
+        return [phase + i * length for i in range(max(count, 0)) if phase + i * length > 0]
+
+    def cross_joints(self, cuts: Mapping[int, Sequence[float]], block_length: float) -> JointSetGeometry:
+        """Joints across columns k at heights ``cuts[k]`` [m], as explicit segments spanning each
+        column, kept only where the piece above leans on the downhill neighbour over at least a
+        quarter of ``block_length`` and leaves no top piece shorter than half of it. A piece
+        standing free above its neighbour, touching it only at a corner, or a thin sliver on
+        top slides off at atan(mu) of its joint long before the column topples (measured: the
+        top block of column G-7, touching F-6 over 8 mm, and a 4 cm sliver on G-7 both slid at
+        28 deg)."""
+        if block_length <= 0:
+            raise ValueError(f"block_length = {block_length} is invalid: it must be > 0 m")
         starts, ends = [], []
-        for k, phase in zip(columns, phases):
+        for k, heights in cuts.items():
             left, right = self.span(k)
-            y = phase
-            while y <= self.supported_height(k) - 0.25 * spacing:
-                if y > 0 and self.heights[k - 1] - y >= 0.5 * spacing:
+            for y in heights:
+                leans = y <= self.supported_height(k) - 0.25 * block_length
+                if y > 0 and leans and self.heights[k - 1] - y >= 0.5 * block_length:
                     starts.append((left, y))
                     ends.append((right, y))
-                y += spacing
         return JointSetGeometry(dip=0, segmentStarts=starts, segmentEnds=ends)

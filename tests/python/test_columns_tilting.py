@@ -17,17 +17,23 @@ def test_layout_outline_columns_and_joints():
                                 (0.05, 0.2), (0.0, 0.2)] for c in p])
     assert [layout.column_of(x) for x in (0.14, 0.06, 0.01, 0.2, -0.01)] == [1, 2, 3, 0, 0]
     assert layout.main_joints().spacing == 0.05
-    cross = layout.cross_joints([1, 2, 3], spacing=0.04, phases=[0.0, 0.015, 0.01])
+    assert layout.stacked_blocks(2, 0.04, 0.015) == pytest.approx([0.015, 0.055, 0.095, 0.135, 0.175, 0.215])
+    assert layout.stacked_blocks(1, 0.04, 0.0) == pytest.approx([0.04, 0.08])
+    cross = layout.cross_joints({k: layout.stacked_blocks(k, 0.04, phase)
+                                 for k, phase in ((1, 0.0), (2, 0.015), (3, 0.01))}, block_length=0.04)
     # column 1 stands free downhill: no joints; column 2 leans on column 1 up to 0.1 m, so not at
     # 0.095 (the piece above would touch column 1 over 5 mm < a quarter block); column 3 on 2 up to 0.2 m
     assert sorted(y for _, y in cross.segmentStarts) == pytest.approx([0.01, 0.015, 0.05, 0.055, 0.09, 0.13, 0.17])
-    sliver = layout.cross_joints([3], spacing=0.04, phases=[0.025])  # 0.185 would leave 1.5 cm on top
+    sliver = layout.cross_joints({3: layout.stacked_blocks(3, 0.04, 0.025)}, 0.04)  # 0.185 would leave 1.5 cm on top
     assert sorted(y for _, y in sliver.segmentStarts) == pytest.approx([0.025, 0.065, 0.105, 0.145])
+    single = layout.cross_joints({2: [0.03], 3: [0.06]}, block_length=0.04)  # one base joint per column
+    assert sorted(y for _, y in single.segmentStarts) == pytest.approx([0.03, 0.06])
     with pytest.raises(ValueError, match="width"):
         columns.ColumnLayout(0.1, 0.0, [0.1])
-    with pytest.raises(ValueError, match="spacing"):
-        layout.cross_joints([2], 0.0, [0.0])
-
+    with pytest.raises(ValueError, match="block_length"):
+        layout.cross_joints({2: [0.03]}, 0.0)
+    with pytest.raises(ValueError, match="phase"):
+        layout.stacked_blocks(2, 0.04, 0.05)
 
 def test_profile_layout_has_flat_tops_at_column_centres():
     layout = columns.ColumnLayout.under_profile(0.1, 0.05, 2, lambda d: 2 * d)

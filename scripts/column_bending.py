@@ -1,0 +1,91 @@
+"""How strong in bending is the tilting-table rock? One continuous column of it, tilted.
+
+A column of the ideal (or random) tilting-table material, 5 cm wide and ``height`` tall, cut
+from a packing as the example's columns are, its bottom discs fixed, is tilted by turning
+gravity at ``rate`` deg/s until it breaks. Prints the tilt of the first broken bond and the
+tilt at which the top has moved half the width (the column has broken and toppled;
+its elastic bending is < 8 mm even at 90 deg), each with the
+tensile stress beam theory gives at the base then, sigma = 3 gamma h^2 sin(a) / b -
+gamma h cos(a), to compare with the block material's tensile strength (31.37 kPa, thesis
+§5.2.1): a continuous column stronger than the slope needs stands when its neighbours fall.
+
+    ./yade -x -n -j1 scripts/column_bending.py rmin rmax bond_tensile_strength [height rate arrangement]
+"""
+import math
+import os
+import sys
+
+from yade import O
+from yade.wrapper import ParallelBondMat
+
+sys.path.insert(0, os.path.join(os.environ["TOPPLING_REPO"], "scripts"))  # set by the ./yade launcher
+from tilting_table_model import definitions  # noqa: E402
+
+from toppling import bonding, boundary, geometry, packing, scene, tilting  # noqa: E402
+
+BLOCK_TENSILE_STRENGTH = 31.37e3  # [Pa] thesis §5.2.1
+
+
+def build_column(model: dict, width: float, height: float) -> list[int]:
+    """The column's discs, bonded as in the example, bottom Rmax fixed; returns their ids."""
+    table = model["table"]
+    rock = ParallelBondMat(**model["COMMON"], **model["TABLE_5_2"][table.arrangement])
+    margin = 2 * width  # pack wider and cut: the column's sides are cut through, as by joints
+    outline = [(-margin, 0), (width + margin, 0), (width + margin, height), (-margin, height)]
+    discs = packing.pack_polygon(geometry.region(outline), table.rmin, table.rmax, table.porosity,
+                                 seed=table.seed).discs
+    ids = scene.add_discs([d for d in discs if 0 <= d[0] <= width], rock)
+    O.engines = scene.engines(gravity=(0, -tilting.G, 0), local_damping=table.damping)
+    floaters = set(bonding.remove_floaters(model["BOND_GAP"], ids=ids))
+    ids = [i for i in ids if i not in floaters]
+    boundary.fix(boundary.near([((-1, 0), (1, 0))], table.rmax, ids), "xy")
+    bonding.bond_within_gap(model["BOND_GAP"], ids)
+    return ids
+
+
+def base_tension(gamma: float, width: float, height: float, tilt_deg: float) -> float:
+    a = math.radians(tilt_deg)
+    return 3 * gamma * height**2 * math.sin(a) / width - gamma * height * math.cos(a)
+
+
+def main() -> None:
+    args = sys.argv[1:]
+    if len(args) < 3:
+        raise SystemExit(__doc__)
+    rmin, rmax, strength = (float(a) for a in args[:3])
+    height = float(args[3]) if len(args) > 3 else 0.3
+    rate = float(args[4]) if len(args) > 4 else 10.0
+    arrangement = args[5] if len(args) > 5 else "ideal"
+    if rate <= 0 or height <= 0:
+        raise ValueError(f"height = {height} m, rate = {rate} deg/s are invalid: both must be > 0")
+    model = definitions(arrangement=f"'{arrangement}'", rmin=rmin, rmax=rmax, bond_tensile_strength=strength)
+    width = model["WIDTH"]
+    ids = build_column(model, width, height)
+    top = max(ids, key=lambda i: O.bodies[i].state.pos[1])
+    O.run(int(0.2 / O.dt), True)  # settle under gravity on the level base
+    gamma = sum(O.bodies[i].state.mass for i in ids) * tilting.G / (width * height * model["T"])  # bulk [N/m3]
+    reference = tuple(O.bodies[top].state.pos)
+    law, tilt, first = scene.bond_law(), 0.0, None
+    every = max(1, int(1e-3 / O.dt))
+    while tilt < 90:
+        tilt += rate * every * O.dt
+        tilting.set_tilt(tilt)
+        O.run(every, True)
+        scene.check_stable(f"the column at {tilt:.1f} deg")
+        if first is None and len(law.breakMode):
+            first = (tilt, {2: "tensile", 3: "shear"}.get(law.breakMode[0], "?"))
+        moved = math.dist(tuple(O.bodies[top].state.pos)[:2], reference[:2])
+        if moved > 0.5 * width:  # bending alone moves it < 8 mm even at 90 deg
+            break
+    print(f"column {1e3 * width:g} x {1e3 * height:g} mm, {arrangement} rock, bond tensile strength "
+          f"{strength / 1e3:g} kPa, R {1e3 * rmin:g}-{1e3 * rmax:g} mm, {len(ids)} discs, {rate:g} deg/s, "
+          f"unit weight {gamma / 1e3:.1f} kN/m3")
+    if first:
+        print(f"first bond broken ({first[1]}) at {first[0]:.1f} deg: beam tension at the base "
+              f"{base_tension(gamma, width, height, first[0]) / 1e3:.1f} kPa")
+    print(f"failed (top moved {1e3 * 0.5 * width:g} mm) at {tilt:.1f} deg: beam tension at the base "
+          f"{base_tension(gamma, width, height, tilt) / 1e3:.1f} kPa "
+          f"(block material: {BLOCK_TENSILE_STRENGTH / 1e3:.2f} kPa)")
+
+
+main()
