@@ -44,7 +44,8 @@ Calibration (the issue allows joint friction and bond strengths within the thesi
 open for the ideal model. At R 2-8 mm its toe columns collapse locally at 36 deg and come to
 rest, and it then stands up to 44 deg at 159 kPa (the random model's own Table 5-2 value, used
 by the ideal rows of tilting_table.table; Table 5-2's 209 kPa stood to 44 deg even with the
-weaker stacked-block layout above): lower bond strengths are being tried (README). The random
+weaker stacked-block layout above); at 100 kPa it fails at 32 deg, at 60 kPa at 26 deg or
+lower (README). The random
 model keeps Table 5-2.
 
 Loading: the discs within Rmax of the table are fixed in x and y (§5.2.4.2); gravity is turned
