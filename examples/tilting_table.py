@@ -61,9 +61,9 @@ runs in chunks of `chunk` seconds with local damping `damping` until
   measured, the random model at 15 deg came to rest 0.7 s into the stage, after a 0.6 s limit
   had called it failed), or a column top has moved more than `fail_displacement` (one column
   width: it has toppled off its neighbour, no need to wait). A local collapse that comes to
-  rest is not failure: measured at R 2-8 mm, the toe columns C-3 to E-5 of the ideal model
-  moved 10-18 mm at 36 deg, breaking 8 bonds, and were at rest 0.76 s into the stage; with a
-  5 mm threshold (before) that stage counted as the failure.
+  rest is not failure: measured at R 2-8 mm, the toe columns of the ideal model moved more
+  than 5 mm at 36 deg, breaking 8 bonds, and were at rest 0.76 s into the stage; with a 5 mm
+  threshold (before) that stage counted as the failure.
 
 The failure tilt is the first stage that fails. The run then goes on for `post_failure_time`
 so the failure surface develops, and toppling.analysis finds it (failure points of the
@@ -83,6 +83,7 @@ starts afresh, `resume=1` continues whatever checkpoint is in `out`.
                                                     # the coarse (R 2-8 mm) pair only
 """
 import math
+from typing import Optional
 
 import numpy as np
 from yade import O, utils
@@ -152,19 +153,25 @@ def cross_joint_heights(layout: columns.ColumnLayout) -> dict[int, list[float]]:
     return {k: layout.stacked_blocks(k, BLOCK_LENGTH, phases[k - 1]) for k in range(1, layout.count + 1)}
 
 
-def build() -> columns.ColumnLayout:
-    layout = columns.ColumnLayout.under_profile(COLUMNS * WIDTH, WIDTH, COLUMNS, profile)
-    rock = ParallelBondMat(**COMMON, **TABLE_5_2[table.arrangement])
-    discs = packing.pack_polygon(geometry.region(layout.section()), table.rmin, table.rmax, table.porosity,
-                                 seed=table.seed).discs
-    ids = scene.add_discs(discs, rock)
+def bonded_rock(discs: list[tuple[float, float, float]], table_surface: tuple) -> list[int]:
+    """The discs (x, y, r) as the model's rock in a scene with its engines: discs without a bond
+    partner dropped, those within Rmax of ``table_surface`` (a segment) fixed, all bonded."""
+    ids = scene.add_discs(discs, ParallelBondMat(**COMMON, **TABLE_5_2[table.arrangement]))
     O.engines = scene.engines(gravity=(0, -tilting.G, 0), local_damping=table.damping)
     floaters = set(bonding.remove_floaters(BOND_GAP, ids=ids))
     ids = [i for i in ids if i not in floaters]
-    boundary.fix(boundary.near([((0, 0), (layout.toe_x, 0))], table.rmax, ids), "xy")
+    boundary.fix(boundary.near([table_surface], table.rmax, ids), "xy")
     # Bond at once: the packer leaves the discs relaxed (mean overlap < 0.2 % Rmin), and without
     # its walls loose discs would slump off the steps (the thesis settles inside walls, §5.3.2).
     bonding.bond_within_gap(BOND_GAP, ids)
+    return ids
+
+
+def build() -> columns.ColumnLayout:
+    layout = columns.ColumnLayout.under_profile(COLUMNS * WIDTH, WIDTH, COLUMNS, profile)
+    discs = packing.pack_polygon(geometry.region(layout.section()), table.rmin, table.rmax, table.porosity,
+                                 seed=table.seed).discs
+    bonded_rock(discs, ((0, 0), (layout.toe_x, 0)))
     (kn_main, mu_main), (kn_base, mu_base), gap = TABLE_5_3[table.arrangement]
     main = SmoothJointMat(normalStiffness=kn_main, shearStiffness=kn_main,
                           frictionAngle=math.atan(mu_main), gap=gap, thickness=T)
@@ -257,10 +264,10 @@ def on_chunk() -> None:
         save_checkpoint()
 
 
-def begin(name: str, **extra) -> dict:
+def begin(name: str, start: Optional[float] = None, **extra) -> dict:
     """Enter a phase of the run (level, ramp, stage, post); the checkpoint records it and when
-    it began, so that a resumed run continues it rather than starting it again."""
-    state["phase"] = dict(name=name, start=O.time, **extra)
+    it began (now by default), so that a resumed run continues it rather than starting it again."""
+    state["phase"] = dict(name=name, start=O.time if start is None else start, **extra)
     return state["phase"]
 
 
@@ -308,8 +315,8 @@ if state["failure_tilt"] is None:
     print(f"no failure up to max_tilt = {table.max_tilt} deg: run again with a higher max_tilt")
     raise SystemExit(0)
 if phase["name"] == "analysis" and O.time - state["stages"][-1]["time"] < table.post_failure_time:
-    phase = begin("post")  # run again with a longer post_failure_time: the post-failure run goes on
-    phase["start"] = state["stages"][-1]["time"]  # the failed stage's end, where it began
+    # run again with a longer post_failure_time: the post-failure run goes on from where it began
+    phase = begin("post", start=state["stages"][-1]["time"])
 if phase["name"] == "post":  # let the failure surface develop
     while O.time - phase["start"] < table.post_failure_time:
         scene.run_checked(table.chunk, "the post-failure run")

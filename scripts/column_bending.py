@@ -16,31 +16,23 @@ import os
 import sys
 
 from yade import O
-from yade.wrapper import ParallelBondMat
 
 sys.path.insert(0, os.path.join(os.environ["TOPPLING_REPO"], "scripts"))  # set by the ./yade launcher
 from tilting_table_model import definitions  # noqa: E402
 
-from toppling import bonding, boundary, geometry, packing, scene, tilting  # noqa: E402
+from toppling import geometry, packing, scene, tilting  # noqa: E402
 
 BLOCK_TENSILE_STRENGTH = 31.37e3  # [Pa] thesis §5.2.1
 
 
 def build_column(model: dict, width: float, height: float) -> list[int]:
-    """The column's discs, bonded as in the example, bottom Rmax fixed; returns their ids."""
+    """The column's discs, bonded as the example's rock, bottom Rmax fixed; returns their ids."""
     table = model["table"]
-    rock = ParallelBondMat(**model["COMMON"], **model["TABLE_5_2"][table.arrangement])
     margin = 2 * width  # pack wider and cut: the column's sides are cut through, as by joints
     outline = [(-margin, 0), (width + margin, 0), (width + margin, height), (-margin, height)]
     discs = packing.pack_polygon(geometry.region(outline), table.rmin, table.rmax, table.porosity,
                                  seed=table.seed).discs
-    ids = scene.add_discs([d for d in discs if 0 <= d[0] <= width], rock)
-    O.engines = scene.engines(gravity=(0, -tilting.G, 0), local_damping=table.damping)
-    floaters = set(bonding.remove_floaters(model["BOND_GAP"], ids=ids))
-    ids = [i for i in ids if i not in floaters]
-    boundary.fix(boundary.near([((-1, 0), (1, 0))], table.rmax, ids), "xy")
-    bonding.bond_within_gap(model["BOND_GAP"], ids)
-    return ids
+    return model["bonded_rock"]([d for d in discs if 0 <= d[0] <= width], ((-1, 0), (1, 0)))
 
 
 def base_tension(gamma: float, width: float, height: float, tilt_deg: float) -> float:
@@ -65,13 +57,11 @@ def main() -> None:
     O.run(int(0.2 / O.dt), True)  # settle under gravity on the level base
     gamma = sum(O.bodies[i].state.mass for i in ids) * tilting.G / (width * height * model["T"])  # bulk [N/m3]
     reference = tuple(O.bodies[top].state.pos)
-    law, tilt, first = scene.bond_law(), 0.0, None
-    every = max(1, int(1e-3 / O.dt))
+    law, tilt, first, start = scene.bond_law(), 0.0, None, O.time
     while tilt < 90:
-        tilt += rate * every * O.dt
+        scene.run_checked(1e-3, f"the column at {tilt:.1f} deg")
+        tilt = rate * (O.time - start)
         tilting.set_tilt(tilt)
-        O.run(every, True)
-        scene.check_stable(f"the column at {tilt:.1f} deg")
         if first is None and len(law.breakMode):
             first = (tilt, {2: "tensile", 3: "shear"}.get(law.breakMode[0], "?"))
         moved = math.dist(tuple(O.bodies[top].state.pos)[:2], reference[:2])

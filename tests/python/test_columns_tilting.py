@@ -35,6 +35,7 @@ def test_layout_outline_columns_and_joints():
     with pytest.raises(ValueError, match="phase"):
         layout.stacked_blocks(2, 0.04, 0.05)
 
+
 def test_profile_layout_has_flat_tops_at_column_centres():
     layout = columns.ColumnLayout.under_profile(0.1, 0.05, 2, lambda d: 2 * d)
     assert layout.heights == pytest.approx([0.05, 0.15])
