@@ -2,7 +2,9 @@
 
     python3 scripts/collect_tilting_table.py [results/tilting_table]
 
-Prints a Markdown table (pasted into README.md) from every ``<folder>/*/summary.json``.
+Prints a Markdown table (pasted into README.md) from every ``<folder>/*/summary.json``, then
+the particle-size check (issue 4: failure tilt and phi within 2 deg of the coarsest packing of
+the same model): runs that differ only in rmin/rmax, each compared with the coarsest of them.
 """
 import glob
 import json
@@ -11,6 +13,7 @@ import sys
 
 
 CALIBRATION = ("bond_tensile_strength", "main_joint_friction", "base_joint_friction")  # 0: the thesis' tables
+SIZE_TOLERANCE_DEG = 2.0
 
 
 def fmt(value, digits=1):
@@ -21,17 +24,49 @@ def fmt(value, digits=1):
     return f"{value:.{digits}f}"
 
 
-def main(folder: str) -> None:
-    rows = []
+def load(folder: str) -> dict[str, dict]:
+    """Summaries by run name (the out folder's name)."""
+    runs = {}
     for path in sorted(glob.glob(os.path.join(folder, "*", "summary.json"))):
         with open(path) as f:
-            s = json.load(f)
+            runs[os.path.basename(os.path.dirname(path))] = json.load(f)
+    return runs
+
+
+def model_key(inputs: dict) -> tuple:
+    """What defines the model apart from the particle size."""
+    return (inputs["arrangement"],) + tuple(inputs.get(name) for name in CALIBRATION)
+
+
+def size_check(runs: dict[str, dict]) -> list[str]:
+    """Lines comparing each finer packing of a model with its coarsest packing."""
+    models: dict[tuple, list[tuple[str, dict]]] = {}
+    for name, s in runs.items():
+        if s["failure_tilt_deg"] is not None:
+            models.setdefault(model_key(s["inputs"]), []).append((name, s))
+    lines = []
+    for group in models.values():
+        group.sort(key=lambda run: -run[1]["inputs"]["rmax"])
+        (coarse_name, coarse), finer = group[0], group[1:]
+        for name, s in finer:
+            tilt = s["failure_tilt_deg"] - coarse["failure_tilt_deg"]
+            phi = [a - b for a, b in zip(s["phi_deg"], coarse["phi_deg"])] if len(s["phi_deg"]) == len(coarse["phi_deg"]) else None
+            ok = abs(tilt) <= SIZE_TOLERANCE_DEG and phi is not None and all(abs(d) <= SIZE_TOLERANCE_DEG for d in phi)
+            phi_text = fmt(phi) if phi is not None else f"{len(s['phi_deg'])} vs {len(coarse['phi_deg'])} surfaces"
+            lines.append(f"| {name} vs {coarse_name} | {tilt:+.1f} | {phi_text} | {'yes' if ok else 'no'} |")
+    return lines
+
+
+def main(folder: str) -> None:
+    runs = load(folder)
+    rows = []
+    for name, s in runs.items():
         inputs = s["inputs"]
         tilt = fmt(s["failure_tilt_deg"]) if s["failure_tilt_deg"] is not None else \
             f"none up to {fmt(s.get('stable_up_to_deg'))}"
         stable = [stage["tilt"] for stage in s["stages"] if stage["outcome"] == "equilibrium"]
         changed = ", ".join(f"{name} {inputs[name]:g}" for name in CALIBRATION if inputs.get(name)) or "Tables 5-2/5-3"
-        rows.append(f"| {os.path.basename(os.path.dirname(path))} | {inputs['arrangement']} | {changed} | "
+        rows.append(f"| {name} | {inputs['arrangement']} | {changed} | "
                     f"{1e3 * inputs['rmin']:g}–{1e3 * inputs['rmax']:g} | {s['discs']} | "
                     f"{fmt(max(stable)) if stable else '-'} | {tilt} | {fmt(s['thesis']['failure_tilt_deg'])} | {fmt(s['phi_deg'])} | "
                     f"{fmt(s['thesis']['phi_deg'])} | {fmt(s['s_over_h'], 2)} | {fmt(s['t_over_h'], 2)} | "
@@ -42,6 +77,12 @@ def main(folder: str) -> None:
           "| tensile / shear breaks | wall time (s) |")
     print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     print("\n".join(rows))
+    checks = size_check(runs)
+    if checks:
+        print(f"\nParticle size (finer minus coarsest packing of the same model; within {SIZE_TOLERANCE_DEG:g} deg?):\n")
+        print("| runs | failure tilt (°) | φ (°) | within tolerance |")
+        print("|---|---|---|---|")
+        print("\n".join(checks))
 
 
 if __name__ == "__main__":

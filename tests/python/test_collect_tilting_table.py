@@ -1,0 +1,29 @@
+"""The particle-size check of scripts/collect_tilting_table.py on made-up summaries."""
+import importlib.util
+import os
+
+from conftest import REPO
+
+spec = importlib.util.spec_from_file_location("collect", os.path.join(REPO, "scripts", "collect_tilting_table.py"))
+collect = importlib.util.module_from_spec(spec)
+spec.loader.exec_module(collect)
+
+
+def summary(rmax: float, tilt, phi: list, strength: float = 130e3, arrangement: str = "ideal") -> dict:
+    inputs = {"arrangement": arrangement, "rmin": rmax / 4, "rmax": rmax, "bond_tensile_strength": strength,
+              "main_joint_friction": 0.0, "base_joint_friction": 0.0}
+    return {"inputs": inputs, "failure_tilt_deg": tilt, "phi_deg": phi}
+
+
+def test_finer_packings_compared_with_the_coarsest_of_the_same_model():
+    runs = {"coarse": summary(0.008, 34.0, [16.0]), "fine": summary(0.0025, 36.0, [14.5]),
+            "medium": summary(0.004, 37.0, [16.0]), "other_model": summary(0.002, 20.0, [30.0], strength=100e3),
+            "stands": summary(0.001, None, [])}
+    lines = sorted(collect.size_check(runs))
+    assert lines == ["| fine vs coarse | +2.0 | -1.5 | yes |", "| medium vs coarse | +3.0 | 0.0 | no |"]
+
+
+def test_a_different_number_of_surfaces_fails_the_check():
+    runs = {"coarse": summary(0.008, 19.0, [24.0], arrangement="random"),
+            "fine": summary(0.004, 19.0, [14.0, 24.0], arrangement="random")}
+    assert collect.size_check(runs) == ["| fine vs coarse | +0.0 | 2 vs 1 surfaces | no |"]
