@@ -40,12 +40,14 @@ surface y = 0, columns standing along +y, the toe at the right, the slope to the
   overlap, see README) and what the calibration below changes.
 
 Calibration (the issue allows joint friction and bond strengths within the thesis' ranges;
-`bond_tensile_strength`, `main_joint_friction`, `base_joint_friction`, 0 = the tables' value):
-open for the ideal model. At R 2-8 mm its toe columns collapse locally at 36 deg and come to
-rest, and it then stands up to 44 deg at 159 kPa (the random model's own Table 5-2 value, used
-by the ideal rows of tilting_table.table; Table 5-2's 209 kPa stood to 44 deg even with the
-weaker stacked-block layout above); at 100 kPa it fails at 32 deg, at 60 kPa at 26 deg or
-lower (README). The random model keeps Table 5-2.
+`bond_tensile_strength`, `main_joint_friction`, `base_joint_friction`, 0 = the tables' value).
+Ideal model, R 2-8 mm, failure tilt against bond tensile strength (README): 60 kPa <= 26 deg,
+100 and 110 kPa 32 deg, 120 kPa 44 deg, 130 kPa standing at 38 deg, 159 kPa (Table 5-2's
+random-model value) none up to 44 deg. At 32 deg the toe columns collapse; up to 110 kPa the
+collapse spreads into the slope, from 120 kPa it comes to rest (18.7 mm), and so do the next
+ones at 36 and 40 deg, so at this resolution no strength fails near 35 deg. The ideal rows of
+tilting_table.table use 110 kPa, the strongest that fails at the first collapse (32 deg, inside
+35 +- 3). The random model keeps Table 5-2.
 
 Loading: the discs within Rmax of the table are fixed in x and y (§5.2.4.2); gravity is turned
 by the tilt (Fig 5-7). The model first comes to rest on the level table, then the tilt rises
@@ -55,16 +57,17 @@ runs in chunks of `chunk` seconds with local damping `damping` until
 
 * equilibrium: the fastest column top (the centroid of the bonded discs within 2 Rmax of the
   top: a loose disc rattling is not a column moving) moves slower than `rest_speed`, or
-* failure: the motion does not die out: a column top is still moving faster than
-  `rest_speed` after `max_stage_time` (2 s: the columns' first bending period is ~0.2 s and
-  local damping needs a few, but blocks settling onto their neighbours creep for longer:
-  measured at R 2-8 mm, the random model at 15 deg came to rest 0.7 s into the stage, after a
-  0.6 s limit had called it failed, and at 19 deg about 1.5 s into it, after a 1 s limit had
-  called it failed: continued, its kinetic energy fell from 7e-3 J to below 1e-9 J), or a column top has moved more than `fail_displacement` (one column
-  width: it has toppled off its neighbour, no need to wait). A local collapse that comes to
-  rest is not failure: measured at R 2-8 mm, the toe columns of the ideal model moved more
-  than 5 mm at 36 deg, breaking 8 bonds, and were at rest 0.76 s into the stage; with a 5 mm
-  threshold (before) that stage counted as the failure.
+* failure: the motion does not die out: a column top is still moving faster than `rest_speed`
+  after `max_stage_time` (2 s: the columns' first bending period is ~0.2 s and local damping
+  needs a few, but blocks settling onto their neighbours creep for longer: measured at R 2-8
+  mm, the random model at 15 deg came to rest 0.7 s into the stage, after a 0.6 s limit had
+  called it failed, and at 19 deg about 1.5 s into it, after a 1 s limit had called it failed:
+  continued, its kinetic energy fell below 1e-9 J), or a column top has moved more than
+  `fail_displacement` (one column width: it has toppled off its neighbour, no need to wait). A
+  local collapse that comes to rest is not failure: measured at R 2-8 mm and 159 kPa, the toe
+  columns of the ideal model moved more than 5 mm at 36 deg, breaking 8 bonds, and were at
+  rest 0.76 s into the stage; with a 5 mm threshold (before) that stage counted as the
+  failure.
 
 The failure tilt is the first stage that fails. The run then goes on for `post_failure_time`
 so the failure surface develops, and toppling.analysis finds it (failure points of the
