@@ -45,9 +45,9 @@ Ideal model, R 2-8 mm, failure tilt against bond tensile strength (README): 60 k
 100 and 110 kPa 32 deg, 120 kPa 44 deg, 130 kPa standing at 38 deg, 159 kPa (Table 5-2's
 random-model value) none up to 44 deg. At 32 deg the toe columns collapse; up to 110 kPa the
 collapse spreads into the slope, from 120 kPa it comes to rest (18.7 mm), and so do the next
-ones at 36 and 40 deg, so at this resolution no strength fails near 35 deg. The ideal rows of
-tilting_table.table use 110 kPa, the strongest that fails at the first collapse (32 deg, inside
-35 +- 3). The random model keeps Table 5-2.
+ones at 36 and 40 deg, so at this resolution none of these strengths fails near 35 deg. The
+ideal rows of tilting_table.table use 110 kPa, the strongest tested that fails at the first
+collapse (32 deg, inside 35 +- 3). The random model keeps Table 5-2.
 
 Loading: the discs within Rmax of the table are fixed in x and y (§5.2.4.2); gravity is turned
 by the tilt (Fig 5-7). The model first comes to rest on the level table, then the tilt rises
@@ -87,6 +87,7 @@ starts afresh, `resume=1` continues whatever checkpoint is in `out`.
                                                     # the coarse (R 2-8 mm) pair only
 """
 import math
+import os
 from typing import Optional
 
 import numpy as np
@@ -233,6 +234,8 @@ if checkpoint.continues(inputs, table.resume, free=FREE):
     layout = columns.ColumnLayout(**state["layout"])
     points = monitor.MonitoringPoints.from_dict(state["points"])
 else:
+    if os.path.exists(f"{table.out}/summary.json"):  # a previous run's: not to be read as this one's
+        os.remove(f"{table.out}/summary.json")
     layout = build()
     members = column_members(layout)
     tops = column_tops(layout, members)
