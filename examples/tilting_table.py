@@ -87,7 +87,6 @@ starts afresh, `resume=1` continues whatever checkpoint is in `out`.
                                                     # the coarse (R 2-8 mm) pair only
 """
 import math
-import os
 from typing import Optional
 
 import numpy as np
@@ -234,8 +233,7 @@ if checkpoint.continues(inputs, table.resume, free=FREE):
     layout = columns.ColumnLayout(**state["layout"])
     points = monitor.MonitoringPoints.from_dict(state["points"])
 else:
-    if os.path.exists(f"{table.out}/summary.json"):  # a previous run's: not to be read as this one's
-        os.remove(f"{table.out}/summary.json")
+    output.discard_summary(table.out)
     layout = build()
     members = column_members(layout)
     tops = column_tops(layout, members)
@@ -294,7 +292,7 @@ if phase["name"] == "ramp":
     phase = begin("stage", reference=tilting.centroids(watched).tolist())
 while state["failure_tilt"] is None and state["tilt"] <= table.max_tilt + 1e-9:
     outcome = run_stage(state["tilt"], phase)
-    moved = np.linalg.norm(tilting.centroids(watched) - np.array(phase["reference"]), axis=1).max()
+    moved = tilting.farthest_move(tilting.centroids(watched), np.array(phase["reference"]))
     state["stages"].append({"tilt": state["tilt"], "outcome": outcome, "time": O.time, "steps": O.iter,
                             "moved_mm": 1e3 * float(moved)})  # a local collapse that came to rest shows here
     print(f"tilt {state['tilt']:.1f} deg: {outcome} (a column top moved {1e3 * moved:.1f} mm)", flush=True)

@@ -50,9 +50,12 @@ def size_check(runs: dict[str, dict]) -> list[str]:
         (coarse_name, coarse), finer = group[0], group[1:]
         for name, s in finer:
             tilt = s["failure_tilt_deg"] - coarse["failure_tilt_deg"]
-            phi = [a - b for a, b in zip(s["phi_deg"], coarse["phi_deg"])] if len(s["phi_deg"]) == len(coarse["phi_deg"]) else None
-            ok = abs(tilt) <= SIZE_TOLERANCE_DEG and phi is not None and all(abs(d) <= SIZE_TOLERANCE_DEG for d in phi)
-            phi_text = fmt(phi) if phi is not None else f"{len(s['phi_deg'])} vs {len(coarse['phi_deg'])} surfaces"
+            if len(s["phi_deg"]) == len(coarse["phi_deg"]):
+                phi = [a - b for a, b in zip(s["phi_deg"], coarse["phi_deg"])]
+                ok = all(abs(d) <= SIZE_TOLERANCE_DEG for d in [tilt, *phi])
+                phi_text = fmt(phi)
+            else:
+                ok, phi_text = False, f"{len(s['phi_deg'])} vs {len(coarse['phi_deg'])} surfaces"
             lines.append(f"| {name} vs {coarse_name} | {tilt:+.1f} | {phi_text} | {'yes' if ok else 'no'} |")
     return lines
 
@@ -65,7 +68,7 @@ def main(folder: str) -> None:
         tilt = fmt(s["failure_tilt_deg"]) if s["failure_tilt_deg"] is not None else \
             f"none up to {fmt(s.get('stable_up_to_deg'))}"
         stable = [stage["tilt"] for stage in s["stages"] if stage["outcome"] == "equilibrium"]
-        changed = ", ".join(f"{name} {inputs[name]:g}" for name in CALIBRATION if inputs.get(name)) or "Tables 5-2/5-3"
+        changed = ", ".join(f"{knob} {inputs[knob]:g}" for knob in CALIBRATION if inputs.get(knob)) or "Tables 5-2/5-3"
         rows.append(f"| {name} | {inputs['arrangement']} | {changed} | "
                     f"{1e3 * inputs['rmin']:g}–{1e3 * inputs['rmax']:g} | {s['discs']} | "
                     f"{fmt(max(stable)) if stable else '-'} | {tilt} | {fmt(s['thesis']['failure_tilt_deg'])} | {fmt(s['phi_deg'])} | "

@@ -24,12 +24,23 @@ def comparison(measured: float, reference: float, unit: str) -> dict[str, Any]:
     return {"measured": measured, "reference": reference, "rel_error": rel, "unit": unit}
 
 
+def summary_path(out: str) -> str:
+    return os.path.join(out, "summary.json")
+
+
 def write_summary(out: str, inputs: dict[str, Any], **results: Any) -> str:
     """Write ``<out>/summary.json`` with the run's inputs and results; returns its path."""
-    path = os.path.join(output_dir(out), "summary.json")
+    path = summary_path(output_dir(out))
     with open(path, "w") as f:
         json.dump({"inputs": inputs, **results}, f, indent=2, default=float)
     return path
+
+
+def discard_summary(out: str) -> None:
+    """Remove a previous run's ``<out>/summary.json``, so that a run starting afresh in ``out``
+    never leaves it to be read as its own."""
+    if os.path.exists(summary_path(out)):
+        os.remove(summary_path(out))
 
 
 def table_inputs(table) -> dict[str, Any]:
