@@ -122,6 +122,10 @@ THESIS = {"ideal": dict(failure_tilt_deg=35, phi_deg=[15]), "random": dict(failu
 
 if table.checkpoint_every <= 0:
     raise ValueError(f"checkpoint_every = {table.checkpoint_every} is invalid: it must be > 0 (wall seconds)")
+if not (0 <= table.start_tilt <= table.max_tilt < 90 and table.step > 0 and table.tilt_rate > 0):
+    raise ValueError(f"start_tilt = {table.start_tilt}, max_tilt = {table.max_tilt}, step = {table.step}, "
+                     f"tilt_rate = {table.tilt_rate} are invalid: they need 0 <= start_tilt <= max_tilt < 90 deg, "
+                     "step > 0 deg and tilt_rate > 0 deg/s")
 if table.arrangement not in TABLE_5_2:
     raise ValueError(f"arrangement = {table.arrangement!r} is invalid: it must be 'ideal' or 'random'")
 # Calibration knobs the issue allows (0: the table's value); stay within the thesis' ranges,
@@ -288,7 +292,8 @@ if phase["name"] == "level":
     print(f"level table: equilibrium after {O.time - phase['start']:.3f} s", flush=True)
     phase = begin("ramp")
 if phase["name"] == "ramp":
-    tilting.ramp(0.0, table.start_tilt, table.start_tilt / table.tilt_rate, on_chunk, start=phase["start"])
+    if table.start_tilt > 0:  # start_tilt 0: the first stage is the level table itself
+        tilting.ramp(0.0, table.start_tilt, table.start_tilt / table.tilt_rate, on_chunk, start=phase["start"])
     phase = begin("stage", reference=tilting.centroids(watched).tolist())
 while state["failure_tilt"] is None and state["tilt"] <= table.max_tilt + 1e-9:
     outcome = run_stage(state["tilt"], phase)

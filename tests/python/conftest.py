@@ -22,16 +22,21 @@ def empty_scene():
     O.reset()
 
 
-def run_example(path: str, tmp_path, threads: int = 1, **params) -> dict:
-    """Run ``./yade -x -n <example>`` headless with ``params`` (through a one-line
-    readParamsFromTable table) and return its ``summary.json``."""
+def run_yade(path: str, tmp_path, threads: int = 1, **params) -> subprocess.CompletedProcess:
+    """Run ``./yade -x -n <path>`` headless with ``params`` (through a one-line
+    readParamsFromTable table); ``out`` defaults to ``tmp_path/out``."""
     params = {"out": str(tmp_path / "out"), **params}
     table = tmp_path / "params.table"
     table.write_text(" ".join(params) + "\n" + " ".join(repr(v) if isinstance(v, str) else str(v)
                                                          for v in params.values()) + "\n")
     env = dict(os.environ, YADE_BATCH=f"{table}:2")
-    proc = subprocess.run([os.path.join(REPO, "yade"), "-x", "-n", "-j", str(threads), os.path.join(REPO, path)],
+    return subprocess.run([os.path.join(REPO, "yade"), "-x", "-n", "-j", str(threads), os.path.join(REPO, path)],
                           env=env, capture_output=True, text=True, timeout=600)
+
+
+def run_example(path: str, tmp_path, threads: int = 1, **params) -> dict:
+    """Run an example as ``run_yade`` does and return its ``summary.json``."""
+    proc = run_yade(path, tmp_path, threads, **params)
     assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-3000:]
-    with open(os.path.join(params["out"], "summary.json")) as f:
+    with open(os.path.join(params.get("out", str(tmp_path / "out")), "summary.json")) as f:
         return json.load(f)

@@ -1,0 +1,12 @@
+"""The tilting-table example stops on bad tilt parameters with a message naming them."""
+import pytest
+from conftest import run_yade
+
+
+@pytest.mark.parametrize("params", [dict(start_tilt=-1.0), dict(start_tilt=50.0, max_tilt=45.0),
+                                    dict(step=0.0), dict(tilt_rate=0.0), dict(max_tilt=90.0)])
+def test_bad_tilt_parameters_stop_before_the_model_is_built(tmp_path, params):
+    proc = run_yade("examples/tilting_table.py", tmp_path, rmin=0.002, rmax=0.008, **params)
+    assert proc.returncode != 0
+    assert "0 <= start_tilt <= max_tilt < 90 deg" in proc.stderr + proc.stdout
+    assert not (tmp_path / "out").exists()
