@@ -52,8 +52,8 @@ collapse (32 deg, inside 35 +- 3). The random model keeps Table 5-2.
 Loading: the discs within Rmax of the table are fixed in x and y (§5.2.4.2); gravity is turned
 by the tilt (Fig 5-7). The model first comes to rest on the level table, then the tilt rises
 steadily at `tilt_rate` deg/s to `start_tilt` (a tilt switched on at once loads the columns
-dynamically, up to twice their static stress), then by `step` degrees per stage. Each stage
-runs in chunks of `chunk` seconds with local damping `damping` until
+dynamically, up to twice their static stress; `start_tilt` 0 skips it), then by `step` degrees
+per stage. Each stage runs in chunks of `chunk` seconds with local damping `damping` until
 
 * equilibrium: the fastest column top (the centroid of the bonded discs within 2 Rmax of the
   top: a loose disc rattling is not a column moving) moves slower than `rest_speed`, or
