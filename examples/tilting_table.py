@@ -79,7 +79,8 @@ the fine packing runs for hours). Running the same command again continues from 
 middle of the level stage, the ramp, a stage or the post-failure run alike, as long as the
 parameters are the same (except `resume`, `checkpoint_every`, `max_tilt` and
 `post_failure_time`: a finished run run again with a longer one goes on after failure); `resume=0`
-starts afresh, `resume=1` continues whatever checkpoint is in `out`.
+starts afresh, `resume=1` continues whatever checkpoint is in `out`; a checkpoint of other
+parameters stops the run (it names them) rather than be overwritten.
 
     ./yade -x -j2 -n examples/tilting_table.py
     ./yade-batch -j1 --log='results/batch/@.log' examples/tilting_table.table examples/tilting_table.py
@@ -349,7 +350,7 @@ def analyse() -> dict:
     column = np.array([layout.column_of(x) for x in reference[:, 0]])
     top_index = [ids.index(i) for i in tops]
     top_disp = np.linalg.norm(disp[top_index], axis=1)
-    threshold = max(0.2 * top_disp.max(), 1e-4)
+    still = max(0.02 * top_disp.max(), 1e-5)  # a column top that moved less has not moved
     # mean speeds over the post-failure run (from the failed stage's end): a column still
     # toppling keeps moving, one that only rattles does not
     start = min(range(len(points.time)), key=lambda i: abs(points.time[i] - state["stages"][-1]["time"]))
@@ -359,12 +360,12 @@ def analyse() -> dict:
     zones, failure_points = [], []
     for k in range(1, layout.count + 1):
         members = column == k
-        point = analysis.failure_point(pos_local[members], disp[members], threshold, cracks, band=2 * table.rmax)
+        point = analysis.failure_point(pos_local[members], disp[members], still, cracks, band=2 * table.rmax)
         base = 0.0
         if point:
             near_cut = members & (np.abs(pos_local[:, 1] - point[1]) < 2 * table.rmax)
             base = float(np.linalg.norm(disp[near_cut], axis=1).mean()) if near_cut.any() else 0.0
-        zone = analysis.zone(top_disp[k - 1], speeds[k - 1] > table.rest_speed, base, still=threshold / 10)
+        zone = analysis.zone(top_disp[k - 1], speeds[k - 1] > table.rest_speed, base, still=still)
         zones.append(zone)
         if point and zone in ("toppling", "sliding"):
             failure_points.append(point)

@@ -63,9 +63,10 @@ class Checkpoint:
 
     def continues(self, inputs: dict[str, Any], resume: int, free: Sequence[str] = ()) -> bool:
         """Whether a run with parameters ``inputs`` continues this checkpoint rather than starting
-        afresh: ``resume`` = 1 yes, 0 no, -1 if there is one whose state's ``"inputs"`` are the
-        same (apart from the ``free`` ones, which may change between a run and its continuation),
-        so that running the same command again continues a stopped run."""
+        afresh: ``resume`` = 1 yes, 0 no, -1 if there is one, so that running the same command
+        again continues a stopped run. With -1 the checkpoint's ``"inputs"`` must be the same
+        (apart from the ``free`` ones, which may change between a run and its continuation):
+        a run with other parameters stops rather than overwrite another run's results."""
         if resume not in (-1, 0, 1):
             raise ValueError(f"resume = {resume} is invalid: it must be -1 (continue a run with the same "
                              "parameters), 0 (start afresh) or 1 (continue the checkpoint)")
@@ -79,10 +80,13 @@ class Checkpoint:
         def fixed(d: dict[str, Any]) -> dict[str, Any]:
             return {k: v for k, v in json.loads(json.dumps(d)).items() if k not in free}  # as stored
 
-        if fixed(saved) != fixed(inputs):
-            print(f"{os.path.dirname(self.state_path)}: its checkpoint is of a run with other parameters; "
-                  "starting afresh (resume=1 continues it)")
-            return False
+        then, now = fixed(saved), fixed(inputs)
+        differ = sorted(k for k in then.keys() | now.keys() if then.get(k) != now.get(k))
+        if differ:
+            changes = ", ".join(f"{k} {then.get(k)!r} there, {now.get(k)!r} here" for k in differ)
+            raise ValueError(f"{os.path.dirname(self.state_path)} holds the checkpoint of a run with other "
+                             f"parameters ({changes}): resume=0 starts afresh and discards it, resume=1 "
+                             "continues it with these parameters, or choose another out folder")
         return True
 
     def load(self) -> dict[str, Any]:

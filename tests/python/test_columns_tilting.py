@@ -115,14 +115,15 @@ def test_checkpoint_resumes_scene_and_driver_state(empty_scene, tmp_path):
     assert len(restored.time) == 2 and restored.total("A-1")[0] == pytest.approx(points.total("A-1")[0])
 
 
-def test_same_command_continues_its_own_checkpoint_only(empty_scene, tmp_path):
+def test_same_command_continues_its_own_checkpoint_and_no_other(empty_scene, tmp_path):
     checkpoint = monitor.Checkpoint(str(tmp_path))
     run = {"rmin": 0.001, "arrangement": "ideal", "max_tilt": 45.0}
     assert not checkpoint.continues(run, resume=-1)  # nothing to continue
     checkpoint.save({"inputs": run})
     assert checkpoint.continues(dict(run), resume=-1)
     assert checkpoint.continues({**run, "max_tilt": 60.0}, resume=-1, free=("max_tilt",))
-    assert not checkpoint.continues({**run, "rmin": 0.002}, resume=-1, free=("max_tilt",))
+    with pytest.raises(ValueError, match=r"other parameters \(rmin 0.001 there, 0.002 here\): resume=0 starts"):
+        checkpoint.continues({**run, "rmin": 0.002}, resume=-1, free=("max_tilt",))  # keeps the other run's results
     assert checkpoint.continues({**run, "rmin": 0.002}, resume=1) and not checkpoint.continues(run, resume=0)
     with pytest.raises(ValueError, match="resume = 2"):
         checkpoint.continues(run, resume=2)
