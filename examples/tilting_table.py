@@ -296,8 +296,7 @@ if phase["name"] == "level":
     print(f"level table: equilibrium after {O.time - phase['start']:.3f} s", flush=True)
     phase = begin("ramp")
 if phase["name"] == "ramp":
-    if table.start_tilt > 0:  # start_tilt 0: the first stage is the level table itself
-        tilting.ramp(0.0, table.start_tilt, table.start_tilt / table.tilt_rate, on_chunk, start=phase["start"])
+    tilting.ramp(0.0, table.start_tilt, table.start_tilt / table.tilt_rate, on_chunk, start=phase["start"])
     phase = begin("stage", reference=tilting.centroids(watched).tolist())
 while state["failure_tilt"] is None and state["tilt"] <= table.max_tilt + 1e-9:
     outcome = run_stage(state["tilt"], phase)

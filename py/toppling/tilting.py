@@ -48,7 +48,11 @@ def ramp(from_deg: float, to_deg: float, duration: float, on_chunk: Optional[Cal
     in increments every ``update`` seconds: a large tilt applied at once would overshoot its
     static response (up to twice the stress, a dynamic load) and break bonds a slowly tilted
     table never breaks. ``on_chunk`` is called about every 0.02 s. ``start``: the simulated time
-    the ramp began (now by default; a resumed run passes the checkpointed one)."""
+    the ramp began (now by default; a resumed run passes the checkpointed one). A ramp to the
+    tilt it starts from has nothing to do, whatever its duration."""
+    if from_deg == to_deg:
+        set_tilt(to_deg)
+        return
     if duration <= 0 or update <= 0:
         raise ValueError(f"duration = {duration}, update = {update} are invalid: both must be > 0 s")
     start = O.time if start is None else start

@@ -22,10 +22,15 @@ def empty_scene():
     O.reset()
 
 
+def with_out(tmp_path, params: dict) -> dict:
+    """``params`` with ``out`` defaulting to ``tmp_path/out``."""
+    return {"out": str(tmp_path / "out"), **params}
+
+
 def run_yade(path: str, tmp_path, threads: int = 1, **params) -> subprocess.CompletedProcess:
     """Run ``./yade -x -n <path>`` headless with ``params`` (through a one-line
-    readParamsFromTable table); ``out`` defaults to ``tmp_path/out``."""
-    params = {"out": str(tmp_path / "out"), **params}
+    readParamsFromTable table; see ``with_out``)."""
+    params = with_out(tmp_path, params)
     table = tmp_path / "params.table"
     table.write_text(" ".join(params) + "\n" + " ".join(repr(v) if isinstance(v, str) else str(v)
                                                          for v in params.values()) + "\n")
@@ -36,7 +41,8 @@ def run_yade(path: str, tmp_path, threads: int = 1, **params) -> subprocess.Comp
 
 def run_example(path: str, tmp_path, threads: int = 1, **params) -> dict:
     """Run an example as ``run_yade`` does and return its ``summary.json``."""
+    params = with_out(tmp_path, params)
     proc = run_yade(path, tmp_path, threads, **params)
     assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-3000:]
-    with open(os.path.join(params.get("out", str(tmp_path / "out")), "summary.json")) as f:
+    with open(os.path.join(params["out"], "summary.json")) as f:
         return json.load(f)
