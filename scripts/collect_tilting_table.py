@@ -13,6 +13,7 @@ import sys
 
 
 CALIBRATION = ("bond_tensile_strength", "main_joint_friction", "base_joint_friction")  # 0: the thesis' tables
+NUMERICS = {"timestep_safety": 0.5}  # the example's defaults (older summaries lack the key)
 SIZE_TOLERANCE_DEG = 2.0
 
 
@@ -38,17 +39,24 @@ def model_key(inputs: dict) -> tuple:
     return (inputs["arrangement"],) + tuple(inputs.get(name) for name in CALIBRATION)
 
 
+def numerics(inputs: dict) -> dict:
+    return {name: inputs.get(name, default) for name, default in NUMERICS.items()}
+
+
 def size_check(runs: dict[str, dict]) -> list[str]:
-    """Lines comparing each finer packing of a model with its coarsest packing."""
+    """Lines comparing each finer packing of a model with its coarsest packing (of the same
+    numerical settings where there is one)."""
     models: dict[tuple, list[tuple[str, dict]]] = {}
     for name, s in runs.items():
         if s["failure_tilt_deg"] is not None:
             models.setdefault(model_key(s["inputs"]), []).append((name, s))
     lines = []
     for group in models.values():
-        group.sort(key=lambda run: -run[1]["inputs"]["rmax"])
-        (coarse_name, coarse), finer = group[0], group[1:]
-        for name, s in finer:
+        coarsest = max(run[1]["inputs"]["rmax"] for run in group)
+        coarse_runs = [run for run in group if run[1]["inputs"]["rmax"] == coarsest]
+        for name, s in (run for run in group if run[1]["inputs"]["rmax"] < coarsest):
+            same = [run for run in coarse_runs if numerics(run[1]["inputs"]) == numerics(s["inputs"])]
+            coarse_name, coarse = (same or coarse_runs)[0]
             tilt = s["failure_tilt_deg"] - coarse["failure_tilt_deg"]
             if len(s["phi_deg"]) == len(coarse["phi_deg"]):
                 phi = [a - b for a, b in zip(s["phi_deg"], coarse["phi_deg"])]
@@ -68,7 +76,9 @@ def main(folder: str) -> None:
         tilt = fmt(s["failure_tilt_deg"]) if s["failure_tilt_deg"] is not None else \
             f"none up to {fmt(s.get('stable_up_to_deg'))}"
         stable = [stage["tilt"] for stage in s["stages"] if stage["outcome"] == "equilibrium"]
-        changed = ", ".join(f"{knob} {inputs[knob]:g}" for knob in CALIBRATION if inputs.get(knob)) or "Tables 5-2/5-3"
+        changed = [f"{knob} {inputs[knob]:g}" for knob in CALIBRATION if inputs.get(knob)] or ["Tables 5-2/5-3"]
+        changed += [f"{knob} {value:g}" for knob, value in numerics(inputs).items() if value != NUMERICS[knob]]
+        changed = ", ".join(changed)
         rows.append(f"| {name} | {inputs['arrangement']} | {changed} | "
                     f"{1e3 * inputs['rmin']:g}–{1e3 * inputs['rmax']:g} | {s['discs']} | "
                     f"{fmt(max(stable)) if stable else '-'} | {tilt} | {fmt(s['thesis']['failure_tilt_deg'])} | {fmt(s['phi_deg'])} | "

@@ -13,22 +13,28 @@ from toppling import scene
 
 class Progress:
     """Prints ``label, step, simulated time, kinetic energy, broken bonds, ETA`` at most every
-    ``every`` wall seconds; ETA from the fraction of the work done that the caller passes."""
+    ``every`` wall seconds. ETA from the fraction of the work done that the caller passes, or
+    from the simulated time still to run at the simulated-time rate since the last line (a phase
+    of known length, such as a post-failure run)."""
 
     def __init__(self, every: float = 10.0):
         self.every = every
         self.start = time.time()
         self.last = -float("inf")
+        self.last_sim_time = None
 
-    def __call__(self, label: str, fraction_done: Optional[float] = None, force: bool = False) -> None:
+    def __call__(self, label: str, fraction_done: Optional[float] = None, force: bool = False,
+                 remaining_time: Optional[float] = None) -> None:
         now = time.time()
         if not force and now - self.last < self.every:
             return
-        self.last = now
         elapsed = now - self.start
         eta = "?"
-        if fraction_done and fraction_done > 0:
+        if remaining_time is not None and self.last_sim_time is not None and O.time > self.last_sim_time:
+            eta = f"{remaining_time * (now - self.last) / (O.time - self.last_sim_time):.0f} s"
+        elif fraction_done and fraction_done > 0:
             eta = f"{elapsed * (1 - fraction_done) / fraction_done:.0f} s"
+        self.last, self.last_sim_time = now, O.time
         print(f"[{elapsed:7.0f} s] {label}  step {O.iter}  t = {O.time:.4f} s  "
               f"Ek = {utils.kineticEnergy():.3e} J  broken bonds {len(scene.bond_law().breakMode)}  ETA {eta}",
               flush=True)

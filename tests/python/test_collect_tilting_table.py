@@ -9,9 +9,9 @@ collect = importlib.util.module_from_spec(spec)
 spec.loader.exec_module(collect)
 
 
-def summary(rmax: float, tilt, phi: list, strength: float = 130e3, arrangement: str = "ideal") -> dict:
+def summary(rmax: float, tilt, phi: list, strength: float = 130e3, arrangement: str = "ideal", **numerics) -> dict:
     inputs = {"arrangement": arrangement, "rmin": rmax / 4, "rmax": rmax, "bond_tensile_strength": strength,
-              "main_joint_friction": 0.0, "base_joint_friction": 0.0}
+              "main_joint_friction": 0.0, "base_joint_friction": 0.0, **numerics}
     return {"inputs": inputs, "failure_tilt_deg": tilt, "phi_deg": phi}
 
 
@@ -27,3 +27,9 @@ def test_a_different_number_of_surfaces_fails_the_check():
     runs = {"coarse": summary(0.008, 19.0, [24.0], arrangement="random"),
             "fine": summary(0.004, 19.0, [14.0, 24.0], arrangement="random")}
     assert collect.size_check(runs) == ["| fine vs coarse | +0.0 | 2 vs 1 surfaces | no |"]
+
+
+def test_a_finer_packing_is_compared_with_the_coarse_run_of_its_own_time_step():
+    runs = {"coarse": summary(0.008, 34.0, [16.0]), "coarse_fast": summary(0.008, 30.0, [10.0], timestep_safety=0.8),
+            "fine_fast": summary(0.004, 31.0, [11.0], timestep_safety=0.8)}
+    assert collect.size_check(runs) == ["| fine_fast vs coarse_fast | +1.0 | 1.0 | yes |"]

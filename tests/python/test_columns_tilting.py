@@ -5,7 +5,7 @@ import math
 import pytest
 from yade import O
 
-from toppling import columns, incline, monitor, tilting
+from toppling import columns, incline, monitor, scene, tilting
 
 ROCK = dict(young=15e6, knKs=1.4, density=2340.0, bondYoung=15.9e6, bondKnKs=1.8, normalDamping=0.13,
             bondNormalDamping=0.2)
@@ -139,3 +139,17 @@ def test_bad_stage_criteria_are_refused():
         tilting.StageCriteria(rest_speed=0)
     with pytest.raises(ValueError, match="duration"):
         tilting.ramp(0.0, 10.0, 0.0)
+
+
+def test_progress_eta_of_a_phase_of_known_length_is_its_remaining_time_at_the_current_rate(
+        empty_scene, monkeypatch, capsys):
+    O.engines = scene.engines(timestepper=False)
+    wall = iter([100.0, 100.0, 110.0])  # Progress() at 100 s, lines at 100 s and 110 s
+    monkeypatch.setattr(monitor.time, "time", lambda: next(wall))
+    progress = monitor.Progress(every=5.0)
+    progress("post", remaining_time=0.3)  # no rate yet
+    O.dt = 0.01
+    O.run(2, True)  # 0.02 simulated s in 10 wall s: 0.1 s more take 50 s
+    progress("post", remaining_time=0.1)
+    lines = capsys.readouterr().out.splitlines()
+    assert lines[0].endswith("ETA ?") and lines[1].endswith("ETA 50 s")

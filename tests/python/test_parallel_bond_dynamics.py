@@ -19,6 +19,8 @@ def shake(ids, speed=0.01, seed=1):
     # Bonds only (discs 1 % apart): a linear system, whose leapfrog energy is conserved exactly
     # but for geometric nonlinearity; measured drift ~1e-6.
     (0.02 * R, 0.5, 1e-3),
+    # YADE's default safety, which the tilting-table runs may use (timestep_safety 0.8).
+    (0.02 * R, 0.8, 1e-3),
     # Touching discs: contacts switching on and off within a step cost O(dt) energy.
     (0.0, 0.3, 0.01),
 ])

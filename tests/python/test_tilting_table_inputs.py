@@ -1,4 +1,4 @@
-"""The tilting-table example stops on bad tilt parameters with a message naming them."""
+"""The tilting-table example stops on bad tilt and time-step parameters with a message naming them."""
 import pytest
 from conftest import run_yade
 
@@ -9,4 +9,12 @@ def test_bad_tilt_parameters_stop_before_the_model_is_built(tmp_path, params):
     proc = run_yade("examples/tilting_table.py", tmp_path, rmin=0.002, rmax=0.008, **params)
     assert proc.returncode != 0
     assert "0 <= start_tilt <= max_tilt < 90 deg" in proc.stderr + proc.stdout
+    assert not (tmp_path / "out").exists()
+
+
+@pytest.mark.parametrize("safety", [0.0, 1.5])
+def test_a_time_step_safety_outside_0_1_stops_the_run(tmp_path, safety):
+    proc = run_yade("examples/tilting_table.py", tmp_path, rmin=0.002, rmax=0.008, timestep_safety=safety)
+    assert proc.returncode != 0
+    assert f"timestep_safety = {safety} is invalid: it must be in (0, 1]" in proc.stderr + proc.stdout
     assert not (tmp_path / "out").exists()
