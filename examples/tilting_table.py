@@ -75,12 +75,12 @@ per stage. Each stage runs in chunks of `chunk` seconds with local damping `damp
 Time step: GlobalStiffnessTimeStepper's, dt = sqrt(2) `timestep_safety` min sqrt(m/K) over the
 discs (K: the stiffness of their bonds, contacts and joints), updated every 100 steps; Table 5-3's
 joints, 150 times stiffer than the bonds, set it. 0.5 keeps a margin for joint contacts that close
-between two updates; YADE's default 0.8 takes 1.5 times fewer steps. Measured at R 2-8 mm, 110 kPa
-(table lines 5 and 18, side by side): the same stages, failure tilt (32 deg), zones (B-2 to G-7
-toppling), S/H and T/H (0.21), 29 / 32 tensile and 5 shear breaks, four of the six failure
-points within 7 mm; the toe columns B-2 and C-3 break 5 and 4 cm lower at 0.8, which turns phi
-from 8.1 to 18.5 deg (README: the same two points move between bond strengths). The calibrated
-rows keep 0.5.
+between two updates; YADE's default 0.8 takes 1.6 times fewer steps per simulated second.
+Measured at R 2-8 mm, 110 kPa (table lines 5 and 18, side by side): the same stages, failure tilt
+(32 deg), zones (B-2 to G-7 toppling), S/H and T/H (0.21), 29 / 32 tensile and 5 shear breaks,
+four of the six failure points within 6.5 mm; the toe columns B-2 and C-3 break 5 and 4 cm lower
+at 0.8, which turns phi from 8.1 to 18.5 deg (README: the same two points move between bond
+strengths). The calibrated rows keep 0.5.
 
 The failure tilt is the first stage that fails. The run then goes on for `post_failure_time`
 so the failure surface develops, and toppling.analysis finds it (failure points of the
