@@ -140,9 +140,7 @@ if not (0 <= table.start_tilt <= table.max_tilt < 90 and table.step > 0 and tabl
     raise ValueError(f"start_tilt = {table.start_tilt}, max_tilt = {table.max_tilt}, step = {table.step}, "
                      f"tilt_rate = {table.tilt_rate} are invalid: they need 0 <= start_tilt <= max_tilt < 90 deg, "
                      "step > 0 deg and tilt_rate > 0 deg/s")
-if not 0 < table.timestep_safety <= 1:
-    raise ValueError(f"timestep_safety = {table.timestep_safety} is invalid: it must be in (0, 1] (a fraction of "
-                     "GlobalStiffnessTimeStepper's sqrt(m/K))")
+scene.check_safety(table.timestep_safety, "timestep_safety")  # before the out folder is made
 if table.arrangement not in TABLE_5_2:
     raise ValueError(f"arrangement = {table.arrangement!r} is invalid: it must be 'ideal' or 'random'")
 # Calibration knobs the issue allows (0: the table's value); stay within the thesis' ranges,
@@ -284,8 +282,8 @@ def save_checkpoint() -> None:
 def on_chunk() -> None:
     points.record()
     state["energy"].append((O.time, state["tilt"], utils.kineticEnergy()))
-    phase = state.get("phase") or {}
-    if phase.get("name") == "post":  # a known length: its ETA is this phase's end
+    phase = state["phase"]
+    if phase["name"] == "post":  # a known length: its ETA is this phase's end
         progress(f"tilt {tilting.current_tilt():.1f} deg, after failure",
                  remaining_time=max(0.0, table.post_failure_time - (O.time - phase["start"])))
     else:  # the ETA is to max_tilt: an upper bound, as the run ends at the failure

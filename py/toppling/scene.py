@@ -54,8 +54,7 @@ def engines(gravity=(0.0, -9.81, 0.0), local_damping: float = 0.0,
     """
     if not 0 <= local_damping < 1:
         raise ValueError(f"local_damping = {local_damping} is invalid: it must be in [0, 1)")
-    if not 0 < safety <= 1:
-        raise ValueError(f"safety = {safety} is invalid: it must be in (0, 1]")
+    check_safety(safety)
     loop = [
         ForceResetter(),
         InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Wall_Aabb(), Bo1_Box_Aabb()]),
@@ -69,6 +68,13 @@ def engines(gravity=(0.0, -9.81, 0.0), local_damping: float = 0.0,
                                                timeStepUpdateInterval=100))
     loop.append(NewtonIntegrator(gravity=gravity, damping=local_damping))
     return loop + list(extra)
+
+
+def check_safety(safety: float, name: str = "safety") -> None:
+    """Raise ValueError unless ``safety`` (GlobalStiffnessTimeStepper's coefficient of
+    sqrt(2 m/K), called ``name`` where the user set it) is in (0, 1]."""
+    if not 0 < safety <= 1:
+        raise ValueError(f"{name} = {safety} is invalid: it must be in (0, 1]")
 
 
 def limit_timestep() -> None:
