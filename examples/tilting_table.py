@@ -216,15 +216,6 @@ def column_members(layout: columns.ColumnLayout) -> dict[int, list]:
     return members
 
 
-def column_tops(layout: columns.ColumnLayout, members: dict[int, list]) -> list[int]:
-    """The disc nearest the top centre of each column: its monitoring point."""
-    tops = []
-    for k, discs in members.items():
-        c = np.array(layout.top_centre(k))
-        tops.append(min(discs, key=lambda b: np.linalg.norm(np.array(tuple(b.state.pos)[:2]) - c)).id)
-    return tops
-
-
 def column_top_bands(members: dict[int, list], depth: float) -> list[list[int]]:
     """The rock discs (>= 2 intact bonds) within ``depth`` of each column's top: their centroid
     is what the stage criteria watch (a loose disc rolling off is not the column moving). A
@@ -255,9 +246,8 @@ else:
     output.discard_summary(table.out)
     layout = build()
     members = column_members(layout)
-    tops = column_tops(layout, members)
     ids = [b.id for b in O.bodies if b is not None]
-    points = monitor.MonitoringPoints([analysis.column_label(k) for k in range(1, layout.count + 1)], tops)
+    points = monitor.column_top_points(layout, ids)
     state = {"inputs": inputs, "layout": vars(layout), "ids": ids, "watched": column_top_bands(members, 2 * table.rmax),
              "tilt": table.start_tilt, "failure_tilt": None,
              "reference": tilting.positions(ids).tolist(), "stages": [], "energy": []}
@@ -376,14 +366,19 @@ def analyse() -> dict:
     speeds = [abs(points.total(label)[-1] - points.total(label)[start]) / span if span > 0 else 0.0
               for label in points.labels]
     zones, failure_points = [], []
+    point_of = {label: n for n, label in enumerate(points.labels)}
     for k in range(1, layout.count + 1):
+        n = point_of.get(analysis.column_label(k))
+        if n is None:  # no disc in the column
+            zones.append("empty")
+            continue
         members = column == k
         point = analysis.failure_point(pos_local[members], disp[members], still, cracks, band=2 * table.rmax)
         base = 0.0
         if point:
             near_cut = members & (np.abs(pos_local[:, 1] - point[1]) < 2 * table.rmax)
             base = float(np.linalg.norm(disp[near_cut], axis=1).mean()) if near_cut.any() else 0.0
-        zone = analysis.zone(top_disp[k - 1], speeds[k - 1] > table.rest_speed, base, still=still)
+        zone = analysis.zone(top_disp[n], speeds[n] > table.rest_speed, base, still=still)
         zones.append(zone)
         if point and zone in ("toppling", "sliding"):
             failure_points.append(point)

@@ -21,6 +21,8 @@ reading of it):
 * zones per column, from its top point: ``no-movement`` (total displacement below
   ``still``), ``stable`` (moved, but came to rest), ``toppling`` (still moving, the top moving
   more than twice as much as the base), ``sliding`` (still moving, base moving with the top);
+  ``empty`` for a column the packing left without discs (a toe column narrower than a few
+  discs): it has no zone of its own and counts for neither distance;
 * T: horizontal distance from the toe to the far edge of the last toppling or sliding column;
   S: the same to the far edge of the last column that moved at all (start of no-movement).
 """
@@ -32,7 +34,7 @@ from typing import Optional, Sequence
 
 import numpy as np
 
-ZONES = ("no-movement", "stable", "toppling", "sliding")
+ZONES = ("no-movement", "stable", "toppling", "sliding", "empty")
 
 
 def slope_frame(points: np.ndarray, toe: Sequence[float], joint_dip_deg: float) -> np.ndarray:
@@ -140,7 +142,7 @@ def zone_distances(zones: Sequence[str], far_edges: Sequence[float], height: flo
     if height <= 0:
         raise ValueError(f"height = {height} is invalid: it must be > 0 m")
     failing = [d for z, d in zip(zones, far_edges) if z in ("toppling", "sliding")]
-    moved = [d for z, d in zip(zones, far_edges) if z != "no-movement"]
+    moved = [d for z, d in zip(zones, far_edges) if z not in ("no-movement", "empty")]
     return {"t_over_h": max(failing) / height if failing else None,
             "s_over_h": max(moved) / height if moved else None}
 

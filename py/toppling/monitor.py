@@ -8,7 +8,7 @@ from typing import Any, Optional, Sequence
 
 from yade import O, utils
 
-from toppling import scene
+from toppling import analysis, columns, scene
 
 
 class Progress:
@@ -134,3 +134,23 @@ class MonitoringPoints:
         points.reference = [tuple(r) for r in d["reference"]]
         points.time, points.x, points.y = d["time"], d["x"], d["y"]
         return points
+
+
+def column_top_points(layout: columns.ColumnLayout, ids: Sequence[int]) -> MonitoringPoints:
+    """Monitoring points at the column tops, labelled as in the thesis (``G-7``): of ``ids``,
+    the disc nearest each column's top centre. A column holding none of them (at coarse
+    resolution a toe column a few discs high can come out of the packing empty) has no
+    point, and the console says so."""
+    nearest: dict[int, tuple[float, int]] = {}
+    for i in ids:
+        x, y = tuple(O.bodies[i].state.pos)[:2]
+        k = layout.column_of(x)
+        if k:
+            cx, cy = layout.top_centre(k)
+            distance = (x - cx) ** 2 + (y - cy) ** 2
+            nearest[k] = min(nearest.get(k, (distance, i)), (distance, i))
+    for k in range(1, layout.count + 1):
+        if k not in nearest:
+            print(f"column {analysis.column_label(k)}: no discs, no monitoring point")
+    ordered = sorted(nearest)
+    return MonitoringPoints([analysis.column_label(k) for k in ordered], [nearest[k][1] for k in ordered])

@@ -122,6 +122,11 @@ def test_zones_and_normalised_distances():
     assert d == {"t_over_h": pytest.approx(0.6), "s_over_h": pytest.approx(0.8)}
 
 
+def test_a_column_without_discs_counts_for_neither_distance():
+    d = analysis.zone_distances(["toppling", "stable", "empty"], far_edges=[0.1, 0.2, 0.3], height=0.5)
+    assert d == {"t_over_h": pytest.approx(0.2), "s_over_h": pytest.approx(0.4)}
+
+
 def test_column_labels_follow_the_thesis():
     assert [analysis.column_label(k) for k in (1, 7, 15, 26, 27)] == ["A-1", "G-7", "O-15", "Z-26", "AA-27"]
     with pytest.raises(ValueError, match="column"):

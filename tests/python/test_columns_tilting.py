@@ -3,7 +3,7 @@ import json
 import math
 
 import pytest
-from yade import O
+from yade import O, utils
 
 from toppling import columns, incline, monitor, scene, tilting
 
@@ -95,6 +95,16 @@ def test_resumed_ramp_and_stage_continue_from_their_start(empty_scene):
     watched = [setup.block]
     assert tilting.run_stage(27.0, watched, tilting.centroids(watched), criteria, start=O.time - 0.3) == "failed"
     assert O.time - resumed_at == pytest.approx(criteria.chunk, rel=0.05)
+
+
+def test_column_top_points_are_the_discs_nearest_the_tops_and_skip_an_empty_column(empty_scene, capsys):
+    layout = columns.ColumnLayout(toe_x=0.15, width=0.05, heights=[0.1, 0.25, 0.2])
+    discs = {(0.075, 0.24): "top of B-2", (0.075, 0.1): "", (0.03, 0.15): "", (0.02, 0.18): "top of C-3"}
+    names = {O.bodies.append(utils.sphere((x, y, 0), 0.005)): name for (x, y), name in discs.items()}
+    points = monitor.column_top_points(layout, list(names))
+    assert points.labels == ["B-2", "C-3"]
+    assert [names[i] for i in points.ids] == ["top of B-2", "top of C-3"]
+    assert "column A-1: no discs" in capsys.readouterr().out
 
 
 def test_checkpoint_resumes_scene_and_driver_state(empty_scene, tmp_path):
