@@ -4,7 +4,8 @@
 
 Prints a Markdown table (pasted into README.md) from every ``<folder>/*/summary.json``, then
 the particle-size check (issue 4: failure tilt and phi within 2 deg of the coarsest packing of
-the same model): runs that differ only in rmin/rmax, each compared with the coarsest of them.
+the same model): runs that differ only in rmin/rmax, each compared with the coarsest of them;
+and the spread of failure tilt and phi over packings that differ only in their seed.
 """
 import glob
 import json
@@ -13,7 +14,7 @@ import sys
 
 
 CALIBRATION = ("bond_tensile_strength", "main_joint_friction", "base_joint_friction")  # 0: the thesis' tables
-NUMERICS = {"timestep_safety": 0.5}  # the example's defaults (older summaries lack the key)
+NUMERICS = {"timestep_safety": 0.5, "seed": 1}  # the example's defaults (older summaries lack the key)
 SIZE_TOLERANCE_DEG = 2.0
 
 
@@ -68,6 +69,28 @@ def size_check(runs: dict[str, dict]) -> list[str]:
     return lines
 
 
+def seed_spread(runs: dict[str, dict]) -> list[str]:
+    """Lines giving, for each model, packing size and time step run with several seeds, the
+    range of failure tilt and of phi (first surface) over the seeds."""
+    groups: dict[tuple, list[dict]] = {}
+    for s in runs.values():
+        if s["failure_tilt_deg"] is not None:
+            inputs = s["inputs"]
+            key = model_key(inputs) + (inputs["rmin"], inputs["rmax"], numerics(inputs)["timestep_safety"])
+            groups.setdefault(key, []).append(s)
+    lines = []
+    for key, group in groups.items():
+        if len({numerics(s["inputs"])["seed"] for s in group}) < 2:
+            continue
+        tilts = [s["failure_tilt_deg"] for s in group]
+        phis = [s["phi_deg"][0] for s in group if s["phi_deg"]]
+        seeds = ", ".join(str(numerics(s["inputs"])["seed"]) for s in group)
+        phi_range = f"{min(phis):.1f}–{max(phis):.1f}" if phis else "-"
+        lines.append(f"| {key[0]} R {1e3 * key[-3]:g}–{1e3 * key[-2]:g} mm, safety {key[-1]:g} | {seeds} | "
+                     f"{min(tilts):.1f}–{max(tilts):.1f} | {phi_range} |")
+    return lines
+
+
 def main(folder: str) -> None:
     runs = load(folder)
     rows = []
@@ -96,6 +119,12 @@ def main(folder: str) -> None:
         print("| runs | failure tilt (°) | φ (°) | within tolerance |")
         print("|---|---|---|---|")
         print("\n".join(checks))
+    spreads = seed_spread(runs)
+    if spreads:
+        print("\nPacking seed (range over the seeds of the same model, packing size and time step):\n")
+        print("| model | seeds | failure tilt (°) | φ (°) |")
+        print("|---|---|---|---|")
+        print("\n".join(spreads))
 
 
 if __name__ == "__main__":
