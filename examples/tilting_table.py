@@ -307,9 +307,13 @@ if phase["name"] == "ramp":
 while state["failure_tilt"] is None and state["tilt"] <= table.max_tilt + 1e-9:
     outcome = run_stage(state["tilt"], phase)
     moved = tilting.farthest_move(tilting.centroids(watched), np.array(phase["reference"]))
-    state["stages"].append({"tilt": state["tilt"], "outcome": outcome, "time": O.time, "steps": O.iter,
-                            "moved_mm": 1e3 * float(moved)})  # a local collapse that came to rest shows here
-    print(f"tilt {state['tilt']:.1f} deg: {outcome} (a column top moved {1e3 * moved:.1f} mm)", flush=True)
+    stage = {"tilt": state["tilt"], "outcome": outcome, "time": O.time, "steps": O.iter,
+             "moved_mm": 1e3 * float(moved)}  # a local collapse that came to rest shows here
+    if outcome == "failed":  # a collapse or a creep: whoever weighs the failure tilt needs to know which
+        stage["failed_by"] = "fail_displacement" if moved > criteria.fail_displacement else "max_stage_time"
+    state["stages"].append(stage)
+    how = f" by {stage['failed_by']}" if "failed_by" in stage else ""
+    print(f"tilt {state['tilt']:.1f} deg: {outcome}{how} (a column top moved {1e3 * moved:.1f} mm)", flush=True)
     series.snapshot()
     if outcome == "failed":
         state["failure_tilt"] = state["tilt"]

@@ -98,6 +98,8 @@ def main(folder: str) -> None:
         inputs = s["inputs"]
         tilt = fmt(s["failure_tilt_deg"]) if s["failure_tilt_deg"] is not None else \
             f"none up to {fmt(s.get('stable_up_to_deg'))}"
+        if s["stages"][-1].get("failed_by") == "max_stage_time":  # a creep rather than a collapse
+            tilt += " (time limit)"
         stable = [stage["tilt"] for stage in s["stages"] if stage["outcome"] == "equilibrium"]
         changed = [f"{knob} {inputs[knob]:g}" for knob in CALIBRATION if inputs.get(knob)] or ["Tables 5-2/5-3"]
         changed += [f"{knob} {value:g}" for knob, value in numerics(inputs).items() if value != NUMERICS[knob]]

@@ -1,5 +1,6 @@
-"""The particle-size check of scripts/collect_tilting_table.py on made-up summaries."""
+"""scripts/collect_tilting_table.py on made-up summaries: the particle-size check, the seed spread, the table."""
 import importlib.util
+import json
 import os
 
 from conftest import REPO
@@ -41,3 +42,16 @@ def test_seeds_give_the_spread_of_one_model_and_a_finer_packing_meets_its_own_se
             "alone": summary(0.004, 30.0, [10.0], strength=100e3)}
     assert collect.seed_spread(runs) == ["| ideal R 2–8 mm, safety 0.5 | 1, 2, 3 | 32.0–34.0 | 8.1–18.5 |"]
     assert collect.size_check(runs) == ["| fine_s2 vs s2 | -1.0 | -1.5 | yes |"]
+
+
+def test_a_failure_by_the_stage_time_limit_is_marked_in_the_table(tmp_path, capsys):
+    run = summary(0.008, 21.0, [31.7], arrangement="random")
+    run.update(stages=[{"tilt": 20.0, "outcome": "equilibrium"},
+                       {"tilt": 21.0, "outcome": "failed", "failed_by": "max_stage_time"}],
+               thesis={"failure_tilt_deg": 19, "phi_deg": [14, 24]}, s_over_h=0.69, t_over_h=0.45,
+               tensile_breaks=6, shear_breaks=0, discs=1469, wall_time=5561.0)
+    (tmp_path / "random_step1").mkdir()
+    (tmp_path / "random_step1" / "summary.json").write_text(json.dumps(run))
+    collect.main(str(tmp_path))
+    row = capsys.readouterr().out.splitlines()[2]
+    assert row.startswith("| random_step1 | random |") and "| 20.0 | 21.0 (time limit) | 19.0 | 31.7 | 14.0, 24.0 |" in row
