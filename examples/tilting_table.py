@@ -50,8 +50,9 @@ ideal rows of tilting_table.table use 110 kPa, the strongest tested that fails a
 collapse (32 deg, inside 35 +- 3; packed with seed 2 instead of 1 it fails at 38 deg, so the
 packing counts as much as the strength). The random model keeps Table 5-2 (159 kPa: fails at
 23 deg, at 21 deg by the stage time limit with 1 deg steps and timestep_safety 0.8); its joint
-frictions are at the range's bottom already, and of the bond strengths tried 100 kPa fails at 15 deg, 120 and 130 kPa have a local collapse at 17 deg that comes to rest, and 130 kPa
-fails at 25 deg (README).
+frictions are at the range's bottom already, and of the bond strengths tried 100 kPa fails at
+15 deg, 120 and 130 kPa have a local collapse at 17 deg that comes to rest, and 130 kPa fails at
+25 deg (README).
 
 Loading: the discs within Rmax of the table are fixed in x and y (§5.2.4.2); gravity is turned
 by the tilt (Fig 5-7). The model first comes to rest on the level table, then the tilt rises
