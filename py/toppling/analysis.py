@@ -34,7 +34,6 @@ from typing import Optional, Sequence
 
 import numpy as np
 
-ZONES = ("no-movement", "stable", "toppling", "sliding", "empty")
 
 
 def slope_frame(points: np.ndarray, toe: Sequence[float], joint_dip_deg: float) -> np.ndarray:
