@@ -35,7 +35,6 @@ from typing import Optional, Sequence
 import numpy as np
 
 
-
 def slope_frame(points: np.ndarray, toe: Sequence[float], joint_dip_deg: float) -> np.ndarray:
     """Scene xy-points into the slope frame, origin at the toe: y along the main joints, whose
     direction is ``joint_dip_deg`` (degrees counter-clockwise from +x, pointing up), x that
