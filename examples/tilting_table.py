@@ -409,11 +409,12 @@ summary = dict(
 output.write_summary(table.out, inputs, **summary)
 
 radii = [O.bodies[i].shape.radius for i in ids]
+view = plots.around(np.array(layout.section()), 0.15)  # discs fallen off the table stay out of it
 cracks = np.array([tuple(p)[:2] for p in law.breakPosition]).reshape(-1, 2)
 plots.slope(table.out, "slope_before", np.array(state["reference"]), radii, np.zeros((len(ids), 2)), [], [],
-            title=f"{table.arrangement} arrangement at the last equilibrium")
+            limits=view, title=f"{table.arrangement} arrangement at the last equilibrium")
 plots.slope(table.out, "slope_after", result["now"], radii, result["disp"], cracks, list(law.breakMode),
-            result["planes"], toe=(layout.toe_x, 0.0),
+            result["planes"], toe=(layout.toe_x, 0.0), limits=view,
             title=f"{table.arrangement}: failed at {state['failure_tilt']:.1f} deg, "
                   f"phi = {', '.join(f'{p:.1f}' for p in summary['phi_deg'])} deg")
 plots.tilt_history(table.out, state["energy"], points, state["failure_tilt"])

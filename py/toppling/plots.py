@@ -2,7 +2,7 @@
 fitted failure surface, the loading history, and monitoring-point histories (Fig 5-21 style)."""
 from __future__ import annotations
 
-from typing import Sequence
+from typing import Optional, Sequence
 
 from toppling import output  # first: it selects matplotlib's headless backend
 
@@ -15,9 +15,11 @@ from toppling.monitor import MonitoringPoints
 
 def slope(out: str, name: str, centres: np.ndarray, radii: Sequence[float], displacement: np.ndarray,
           cracks: np.ndarray, modes: Sequence[int], planes: Sequence[Plane] = (), toe=(0.0, 0.0),
-          title: str = "") -> str:
+          title: str = "", limits: Optional[tuple[float, float, float, float]] = None) -> str:
     """Discs at ``centres`` coloured by |displacement| [mm], cracks (x tension, + shear) and the
-    failure planes (given in the slope frame of upright columns: x - toe_x, y)."""
+    failure planes (given in the slope frame of upright columns: x - toe_x, y). ``limits``
+    (xmin, xmax, ymin, ymax, e.g. from around()) fixes the view, so that discs that fell off
+    the model do not shrink it to a dot; the figure says how many discs it leaves out."""
     fig, ax = output.figure("x (m)", "y (m)", title)
     radii = np.asarray(radii)
     magnitude = 1e3 * np.linalg.norm(displacement, axis=1)
@@ -38,9 +40,30 @@ def slope(out: str, name: str, centres: np.ndarray, radii: Sequence[float], disp
                 label=f"failure surface {k + 1}: phi = {plane.phi_deg:.1f} deg")
     ax.set_aspect("equal")
     ax.autoscale_view()
+    if limits is not None:
+        ax.set_xlim(*limits[:2])
+        ax.set_ylim(*limits[2:])
+        left_out = outside(centres, limits)
+        if left_out:
+            ax.text(0.01, 0.01, f"{left_out} discs outside the view", transform=ax.transAxes, fontsize=7)
     if len(planes) or len(cracks):
         ax.legend(loc="upper right", fontsize=7)
     return output.save_figure(fig, out, name)
+
+
+def around(centres: np.ndarray, margin: float) -> tuple[float, float, float, float]:
+    """The bounding box (xmin, xmax, ymin, ymax) of ``centres`` widened by ``margin`` times
+    its larger side on every side."""
+    lo, hi = np.min(centres, axis=0), np.max(centres, axis=0)
+    pad = margin * float(np.max(hi - lo))
+    return float(lo[0] - pad), float(hi[0] + pad), float(lo[1] - pad), float(hi[1] + pad)
+
+
+def outside(centres: np.ndarray, limits: tuple[float, float, float, float]) -> int:
+    """How many ``centres`` lie outside ``limits`` (xmin, xmax, ymin, ymax)."""
+    x, y = np.asarray(centres).reshape(-1, 2).T
+    inside = (limits[0] <= x) & (x <= limits[1]) & (limits[2] <= y) & (y <= limits[3])
+    return int((~inside).sum())
 
 
 def tilt_history(out: str, energy: Sequence[tuple[float, float, float]], points: MonitoringPoints,

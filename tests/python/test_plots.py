@@ -1,0 +1,31 @@
+"""The slope figure's view: the model's outline, not discs that fell off it."""
+import numpy as np
+import pytest
+from matplotlib import image
+
+from toppling import plots
+
+
+def test_around_widens_the_box_by_a_share_of_its_larger_side():
+    outline = np.array([(0.0, 0.0), (0.8, 0.0), (0.8, 0.4), (0.0, 0.4)])
+    assert plots.around(outline, 0.1) == pytest.approx((-0.08, 0.88, -0.08, 0.48))
+
+
+def test_outside_counts_the_centres_beyond_the_limits():
+    centres = np.array([(0.1, 0.1), (0.5, 0.3), (0.6, -12.0), (2.0, 0.2)])
+    assert plots.outside(centres, (0.0, 1.0, 0.0, 0.5)) == 2
+
+
+def test_a_fallen_disc_does_not_shrink_the_slope_to_a_dot(tmp_path):
+    """With the limits of the outline the discs fill the picture as when none had fallen."""
+    grid = np.array([(x, y) for x in np.arange(0.005, 0.4, 0.01) for y in np.arange(0.005, 0.2, 0.01)])
+    fallen = np.vstack([grid, [(0.45, -30.0)]])
+    view = plots.around(np.array([(0, 0), (0.4, 0), (0.4, 0.2), (0, 0.2)]), 0.15)
+
+    def drawn_share(centres, name):
+        path = plots.slope(str(tmp_path), name, centres, [0.005] * len(centres), np.zeros_like(centres),
+                           [], [], limits=view)
+        rgb = image.imread(path)[..., :3]
+        return float((rgb.sum(axis=2) < 1.5).mean())  # dark pixels: discs (displacement 0 is dark purple)
+
+    assert drawn_share(fallen, "fallen") == pytest.approx(drawn_share(grid, "standing"), rel=0.1)
