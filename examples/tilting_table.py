@@ -224,12 +224,12 @@ def column_top_bands(members: dict[int, list], depth: float) -> list[list[int]]:
     column too small for the discs to bond (the toe column at R 2-8 mm) is not watched."""
     bands = []
     for k, discs in members.items():
-        rock = [b for b in discs if bonding.intact_bonds(b.id) >= 2]
+        rock = bonding.rock([b.id for b in discs])
         if not rock:
             print(f"column {analysis.column_label(k)}: no bonded discs (rmax = {table.rmax} m), not watched")
             continue
-        top = max(b.state.pos[1] for b in rock)
-        bands.append([b.id for b in rock if b.state.pos[1] > top - depth])
+        top = max(O.bodies[i].state.pos[1] for i in rock)
+        bands.append([i for i in rock if O.bodies[i].state.pos[1] > top - depth])
     return bands
 
 
@@ -249,7 +249,7 @@ else:
     layout = build()
     members = column_members(layout)
     ids = [b.id for b in O.bodies if b is not None]
-    points = monitor.column_top_points(layout, ids)
+    points = monitor.column_top_points(layout, bonding.rock(ids))  # a loose top disc may drop off the table
     state = {"inputs": inputs, "layout": vars(layout), "ids": ids, "watched": column_top_bands(members, 2 * table.rmax),
              "tilt": table.start_tilt, "failure_tilt": None,
              "reference": tilting.positions(ids).tolist(), "stages": [], "energy": []}
@@ -361,9 +361,14 @@ def analyse() -> dict:
     disp = now - reference  # the slope frame is the table frame shifted: same components
     law = scene.bond_law()
     cracks = analysis.slope_frame(np.array([tuple(p)[:2] for p in law.breakPosition]).reshape(-1, 2), toe, 90)
+    # a disc that had dropped off the table before the last equilibrium (a loose toe disc at
+    # coarse resolution) is out of the model: its fall is no column's motion
+    on_table = reference[:, 1] > -2 * table.rmax
     column = np.array([layout.column_of(x) for x in reference[:, 0]])
+    column[~on_table] = 0
     top_index = [ids.index(i) for i in tops]
     top_disp = np.linalg.norm(disp[top_index], axis=1)
+    top_disp[~on_table[top_index]] = 0.0
     still = max(0.02 * top_disp.max(), 1e-5)  # a column top that moved less has not moved
     # mean speeds over the post-failure run (from the failed stage's end): a column still
     # toppling keeps moving, one that only rattles does not
@@ -372,10 +377,10 @@ def analyse() -> dict:
     speeds = [abs(points.total(label)[-1] - points.total(label)[start]) / span if span > 0 else 0.0
               for label in points.labels]
     zones, failure_points = [], []
-    point_of = {label: n for n, label in enumerate(points.labels)}
+    point_of = {label: n for n, label in enumerate(points.labels) if on_table[top_index[n]]}
     for k in range(1, layout.count + 1):
         n = point_of.get(analysis.column_label(k))
-        if n is None:  # no disc in the column
+        if n is None:  # no disc in the column, or its top fell off the table
             zones.append("empty")
             continue
         members = column == k

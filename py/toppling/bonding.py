@@ -84,3 +84,9 @@ def bond_within_gap(gap: float = 0.0, ids: Optional[Sequence[int]] = None) -> in
 def intact_bonds(body_id: int) -> int:
     """Number of intact parallel bonds of a disc."""
     return sum(1 for i in O.bodies[body_id].intrs() if getattr(i.phys, "bondState", 0) == 1)
+
+
+def rock(ids: Sequence[int], min_bonds: int = 2) -> list[int]:
+    """The discs of ``ids`` held by at least ``min_bonds`` intact bonds: the rock, without the
+    loose discs and pairs that rattle, roll or drop off (which must not count as rock moving)."""
+    return [i for i in ids if intact_bonds(i) >= min_bonds]
