@@ -21,8 +21,9 @@ reading of it):
 * zones per column, from its top point: ``no-movement`` (total displacement below
   ``still``), ``stable`` (moved, but came to rest), ``toppling`` (still moving, the top moving
   more than twice as much as the base), ``sliding`` (still moving, base moving with the top);
-  ``empty`` for a column the packing left without discs (a toe column only a few discs
-  high): it has no zone of its own and counts for neither distance;
+  ``empty`` for a column without rock to judge (a toe column only a few discs high, which
+  the packing can leave without bonded discs or whose loose discs drop off the table before
+  the last equilibrium): it has no zone of its own and counts for neither distance;
 * T: horizontal distance from the toe to the far edge of the last toppling or sliding column;
   S: the same to the far edge of the last column that moved at all (start of no-movement).
 """

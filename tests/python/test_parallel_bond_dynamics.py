@@ -129,3 +129,14 @@ def test_bonding_after_settling_is_stress_free_and_limits_the_time_step(empty_sc
     assert O.dt <= 0.5 * law.criticalTimeStep() * (1 + 1e-12) < dt_before  # bonds 20x stiffer than contacts
     O.run(2000, True)
     assert not law.unstable and not law.breakMode
+
+
+def test_rock_is_the_discs_held_by_two_bonds_not_a_loose_pair(empty_scene):
+    """A chain of four bonded discs beside a bonded pair: the pair and the chain's ends are not rock."""
+    mat = material()
+    ids = scene.add_discs([(2 * R * k, 0.0, R) for k in range(4)] + [(2 * R * k, 10 * R, R) for k in range(2)], mat)
+    O.engines = scene.engines()
+    O.step()
+    assert bonding.bond_within_gap(1e-6 * R, ids) == 3 + 1
+    assert bonding.rock(ids) == ids[1:3]
+    assert bonding.rock(ids, min_bonds=1) == ids
