@@ -253,7 +253,7 @@ else:
     state = {"inputs": inputs, "layout": vars(layout), "ids": ids, "watched": column_top_bands(members, 2 * table.rmax),
              "tilt": table.start_tilt, "failure_tilt": None,
              "reference": tilting.positions(ids).tolist(), "stages": [], "energy": []}
-ids, tops, watched = state["ids"], points.ids, state["watched"]
+ids, watched = state["ids"], state["watched"]
 series = paraview.ParaViewSeries(f"{table.out}/paraview", joints.rock_functor().joints.blockOfBody, state.get("series"))
 progress = monitor.Progress()
 earlier_wall_time = state.get("wall_time", 0.0)  # of the runs this one resumes
@@ -366,33 +366,14 @@ def analyse() -> dict:
     on_table = reference[:, 1] > -2 * table.rmax
     column = np.array([layout.column_of(x) for x in reference[:, 0]])
     column[~on_table] = 0
-    top_index = [ids.index(i) for i in tops]
-    top_disp = np.linalg.norm(disp[top_index], axis=1)
-    top_disp[~on_table[top_index]] = 0.0
-    still = max(0.02 * top_disp.max(), 1e-5)  # a column top that moved less has not moved
-    # mean speeds over the post-failure run (from the failed stage's end): a column still
-    # toppling keeps moving, one that only rattles does not
-    start = min(range(len(points.time)), key=lambda i: abs(points.time[i] - state["stages"][-1]["time"]))
-    span = points.time[-1] - points.time[start]
-    speeds = [abs(points.total(label)[-1] - points.total(label)[start]) / span if span > 0 else 0.0
-              for label in points.labels]
-    zones, failure_points = [], []
-    point_of = {label: n for n, label in enumerate(points.labels) if on_table[top_index[n]]}
-    for k in range(1, layout.count + 1):
-        n = point_of.get(analysis.column_label(k))
-        if n is None:  # no disc in the column, or its top fell off the table
-            zones.append("empty")
-            continue
-        members = column == k
-        point = analysis.failure_point(pos_local[members], disp[members], still, cracks, band=2 * table.rmax)
-        base = 0.0
-        if point:
-            near_cut = members & (np.abs(pos_local[:, 1] - point[1]) < 2 * table.rmax)
-            base = float(np.linalg.norm(disp[near_cut], axis=1).mean()) if near_cut.any() else 0.0
-        zone = analysis.zone(top_disp[n], speeds[n] > table.rest_speed, base, still=still)
-        zones.append(zone)
-        if point and zone in ("toppling", "sliding"):
-            failure_points.append(point)
+    index = {i: n for n, i in enumerate(ids)}
+    top_of = {label: index[i] for label, i in zip(points.labels, points.ids) if on_table[index[i]]}
+    labels = [analysis.column_label(k) for k in range(1, layout.count + 1)]
+    # over the post-failure run, from the failed stage's end
+    moving = [label in top_of and points.rate_since(label, state["stages"][-1]["time"]) > table.rest_speed
+              for label in labels]
+    zones, failure_points = analysis.column_failure(pos_local, disp, column, [top_of.get(label) for label in labels],
+                                                    moving, cracks, band=2 * table.rmax)
     planes = analysis.fit_failure_surface(failure_points) if len(failure_points) >= 2 else []
     # horizontal distance (tilted table) from the toe to each column's far top corner; slope height
     far_edges = [k * WIDTH * math.cos(alpha) - layout.heights[k - 1] * math.sin(alpha)

@@ -135,6 +135,36 @@ def zone(top_displacement: float, still_moving: bool, base_displacement: float, 
     return "toppling" if top_displacement > 2 * base_displacement else "sliding"
 
 
+def column_failure(pos: np.ndarray, disp: np.ndarray, column: np.ndarray, tops: Sequence[Optional[int]],
+                   moving: Sequence[bool], cracks: Optional[np.ndarray], band: float
+                   ) -> tuple[list[str], list[tuple[float, float]]]:
+    """Zones of columns 1..n and the failure points of those toppling or sliding.
+
+    Every disc's position ``pos`` at the last equilibrium and displacement ``disp`` since, and
+    its ``column`` (0: none, e.g. a disc that dropped off the table); per column k,
+    ``tops[k - 1]`` the index of its top point's disc (None: nothing to judge, zone ``empty``)
+    and ``moving[k - 1]`` whether that point still moves. ``band``: the reach of a failure point
+    (cracks within it refine it, discs within it are the base that tells sliding from
+    toppling). A top that moved less than 2 % of the farthest-moved top has not moved."""
+    top_disp = {k: float(np.linalg.norm(disp[i])) for k, i in enumerate(tops, start=1) if i is not None}
+    still = max(0.02 * max(top_disp.values(), default=0.0), 1e-5)
+    zones, points = [], []
+    for k in range(1, len(tops) + 1):
+        if k not in top_disp:
+            zones.append("empty")
+            continue
+        members = column == k
+        point = failure_point(pos[members], disp[members], still, cracks, band=band)
+        base = 0.0
+        if point:
+            near_cut = members & (np.abs(pos[:, 1] - point[1]) < band)
+            base = float(np.linalg.norm(disp[near_cut], axis=1).mean()) if near_cut.any() else 0.0
+        zones.append(zone(top_disp[k], moving[k - 1], base, still=still))
+        if point and zones[-1] in ("toppling", "sliding"):
+            points.append(point)
+    return zones, points
+
+
 def zone_distances(zones: Sequence[str], far_edges: Sequence[float], height: float) -> dict[str, Optional[float]]:
     """T/H and S/H from the zones of columns 1, 2, ... (toe first) and the horizontal distance
     from the toe to each column's far edge; None where the zone does not occur."""

@@ -123,6 +123,15 @@ class MonitoringPoints:
     def total(self, label: str) -> list[float]:
         return [(dx * dx + dy * dy) ** 0.5 for dx, dy in zip(self.x[label], self.y[label])]
 
+    def rate_since(self, label: str, since: float) -> float:
+        """How fast [m/s] the point's total displacement changed from the record nearest the
+        simulated time ``since`` to the last record (0 with no time between): a column still
+        toppling keeps moving, one that only rattles does not."""
+        start = min(range(len(self.time)), key=lambda i: abs(self.time[i] - since))
+        span = self.time[-1] - self.time[start]
+        total = self.total(label)
+        return abs(total[-1] - total[start]) / span if span > 0 else 0.0
+
     def as_dict(self) -> dict[str, Any]:
         return {"labels": self.labels, "ids": self.ids, "reference": self.reference, "time": self.time,
                 "x": self.x, "y": self.y}

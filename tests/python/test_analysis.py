@@ -127,6 +127,23 @@ def test_a_column_without_discs_counts_for_neither_distance():
     assert d == {"t_over_h": pytest.approx(0.2), "s_over_h": pytest.approx(0.4)}
 
 
+def test_column_failure_gives_zones_and_the_failure_points_of_the_failing_columns():
+    """Columns toppling above a 15 deg surface, one without a top point, one come to rest, three
+    unmoved, and a disc off the table falling 7 m (column 0): zones as built, the surface found."""
+    tan = math.tan(math.radians(15))
+    pos, disp, column = columns_cut_by(lambda x: 0.02 - tan * x)
+    disp[column >= 10] = 0.0
+    pos, disp, column = np.vstack([pos, [(0.01, -0.1)]]), np.vstack([disp, [(0.0, -7.0)]]), np.append(column, 0)
+    tops = [int(np.flatnonzero(column == k)[np.argmax(pos[column == k, 1])]) for k in range(1, 13)]
+    tops[2] = None
+    moving = [k != 9 for k in range(1, 13)]
+    zones, points = analysis.column_failure(pos, disp, column, tops, moving, cracks=None, band=0.008)
+    assert zones == ["toppling"] * 2 + ["empty"] + ["toppling"] * 5 + ["stable"] + ["no-movement"] * 3
+    assert len(points) == 7
+    planes = analysis.fit_failure_surface(points)
+    assert len(planes) == 1 and planes[0].phi_deg == pytest.approx(15, abs=0.5)
+
+
 def test_column_labels_follow_the_thesis():
     assert [analysis.column_label(k) for k in (1, 7, 15, 26, 27)] == ["A-1", "G-7", "O-15", "Z-26", "AA-27"]
     with pytest.raises(ValueError, match="column"):

@@ -163,3 +163,12 @@ def test_progress_eta_of_a_phase_of_known_length_is_its_remaining_time_at_the_cu
     progress("post", remaining_time=0.1)
     lines = capsys.readouterr().out.splitlines()
     assert lines[0].endswith("ETA ?") and lines[1].endswith("ETA 50 s")
+
+
+def test_rate_since_is_the_change_of_total_displacement_per_second():
+    points = monitor.MonitoringPoints.from_dict({"labels": ["A-1"], "ids": [0], "reference": [(0, 0, 0)],
+                                                 "time": [0.0, 1.0, 2.0, 3.0],
+                                                 "x": {"A-1": [0.0, 0.03, 0.03, 0.09]},
+                                                 "y": {"A-1": [0.0, 0.04, 0.04, 0.12]}})
+    assert points.rate_since("A-1", 1.1) == pytest.approx(0.05)  # 0.05 m to 0.15 m over 1 s to 3 s
+    assert points.rate_since("A-1", 3.0) == 0.0
