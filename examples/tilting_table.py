@@ -273,7 +273,7 @@ def save_checkpoint() -> None:
 
 def on_chunk() -> None:
     points.record()
-    state["energy"].append((O.time, state["tilt"], utils.kineticEnergy()))
+    state["energy"].append((O.time, tilting.current_tilt(), utils.kineticEnergy()))  # the ramp shows as one
     phase = state["phase"]
     if phase["name"] == "post":  # a known length: its ETA is this phase's end
         progress(f"tilt {tilting.current_tilt():.1f} deg, after failure",
