@@ -79,3 +79,27 @@ def test_resumed_series_continues_numbering_and_displacements(empty_scene, tmp_p
     assert field(discs, "displacement")[0] == pytest.approx((0.5 * R, 0, 0))
     entries = ET.parse(tmp_path / "discs.pvd").getroot().find("Collection")
     assert [e.get("file") for e in entries] == ["discs_00000.vtu", "discs_00001.vtu"]
+
+
+def test_bond_stress_history_reads_the_series_back(empty_scene, tmp_path, capsys):
+    """scripts/bond_stress_history.py: per snapshot the stage's tilt, bond counts and the peak stress."""
+    import importlib.util
+    from conftest import REPO
+    spec = importlib.util.spec_from_file_location("history", os.path.join(REPO, "scripts", "bond_stress_history.py"))
+    history = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(history)
+
+    rock = material()
+    O.bodies.append([scene.disc((0, 0), R, rock, fixed=True), scene.disc((0, 2 * R), R, rock, fixed=True)])
+    O.engines = scene.engines(gravity=(0, 0, 0))
+    bonding.bond_within_gap(1e-9)
+    boundary.move([1], (0, 1e-3))
+    O.run(5, True)  # pulled: the bond carries tension
+    series = paraview.ParaViewSeries(str(tmp_path / "paraview"))
+    series.snapshot()
+    sigma = O.interactions[0, 1].phys.bondSigmaMax
+    (tmp_path / "summary.json").write_text(json.dumps({"stages": [{"time": O.time, "tilt": 26.0}]}))
+    history.main(str(tmp_path))
+    row = capsys.readouterr().out.splitlines()[2].split("|")
+    assert sigma > 0 and [c.strip() for c in row[2:5]] == ["26", "1", "0 / 0"]
+    assert float(row[5]) == pytest.approx(sigma / 1e3, abs=0.05)

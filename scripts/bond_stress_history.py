@@ -1,0 +1,62 @@
+"""Peak bond stresses at every stage of a tilting-table run, from its ParaView series.
+
+    python3 scripts/bond_stress_history.py results/tilting_table/ideal_safety08
+
+For each snapshot (one per stage end, one after the post-failure run) prints the tilt of the
+stage it ends, the intact and broken bonds, and the three largest bond tensile stresses
+sigma_max and the largest shear stress tau of the intact bonds [kPa]: how close the rock is to
+its first crack, which is what a calibration of the bond strength moves.
+"""
+import json
+import os
+import sys
+import xml.etree.ElementTree as ET
+
+import numpy as np
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
+
+
+def snapshots(folder: str) -> list[tuple[float, str]]:
+    """(simulated time, .vtu path) of the bonds series in ``folder``/paraview."""
+    series = os.path.join(folder, "paraview")
+    root = ET.parse(os.path.join(series, "bonds.pvd")).getroot()
+    return [(float(d.get("timestep")), os.path.join(series, d.get("file"))) for d in root.iter("DataSet")]
+
+
+def stage_tilts(folder: str) -> list[tuple[float, float]]:
+    """(end time, tilt) of the run's stages, from its summary or, while it runs, its checkpoint."""
+    for name in ("summary.json", "checkpoint.json"):
+        path = os.path.join(folder, name)
+        if os.path.exists(path):
+            with open(path) as f:
+                return [(s["time"], s["tilt"]) for s in json.load(f)["stages"]]
+    return []
+
+
+def bond_arrays(path: str) -> dict[str, np.ndarray]:
+    reader = vtkXMLUnstructuredGridReader()
+    reader.SetFileName(path)
+    reader.Update()
+    cells = reader.GetOutput().GetCellData()
+    return {cells.GetArrayName(i): vtk_to_numpy(cells.GetArray(i)) for i in range(cells.GetNumberOfArrays())}
+
+
+def main(folder: str) -> None:
+    stages = stage_tilts(folder)
+    print("| time (s) | tilt (°) | intact | broken tension / shear | largest σ (kPa) | largest τ (kPa) |")
+    print("|---|---|---|---|---|---|")
+    for time, path in snapshots(folder):
+        tilt = next((f"{t:g}" for end, t in stages if abs(end - time) < 1e-9), "after failure")
+        bonds = bond_arrays(path)
+        intact = bonds["state"] == 1
+        sigma = np.sort(bonds["sigma_max"][intact])[::-1][:3] / 1e3
+        tau = bonds["tau"][intact].max() / 1e3 if intact.any() else 0.0
+        print(f"| {time:.3f} | {tilt} | {intact.sum()} | {(bonds['state'] == 2).sum()} / {(bonds['state'] == 3).sum()} | "
+              f"{', '.join(f'{s:.1f}' for s in sigma)} | {tau:.1f} |")
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 2:
+        sys.exit(__doc__)
+    main(sys.argv[1])
