@@ -56,9 +56,9 @@ def size_check(runs: dict[str, dict]) -> list[str]:
     for group in models.values():
         for name, s in group:
             coarser = [run for run in group if run[1]["inputs"]["rmax"] > s["inputs"]["rmax"]]
-            same = [run for run in coarser if numerics(run[1]["inputs"]) == numerics(s["inputs"])]
             if not coarser:
                 continue
+            same = [run for run in coarser if numerics(run[1]["inputs"]) == numerics(s["inputs"])]
             coarse_name, coarse = min(same or coarser, key=lambda run: run[1]["inputs"]["rmax"])
             tilt = s["failure_tilt_deg"] - coarse["failure_tilt_deg"]
             if len(s["phi_deg"]) == len(coarse["phi_deg"]):

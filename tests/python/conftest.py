@@ -1,4 +1,5 @@
 """Fixtures for physics tests run in YADE's Python (``source scripts/env.sh`` first)."""
+import importlib.util
 import json
 import os
 import subprocess
@@ -46,3 +47,11 @@ def run_example(path: str, tmp_path, threads: int = 1, **params) -> dict:
     assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-3000:]
     with open(os.path.join(params["out"], "summary.json")) as f:
         return json.load(f)
+
+
+def load_script(name: str):
+    """``scripts/<name>.py`` as a module, to test its functions."""
+    spec = importlib.util.spec_from_file_location(name, os.path.join(REPO, "scripts", name + ".py"))
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module

@@ -1,13 +1,9 @@
 """scripts/collect_tilting_table.py on made-up summaries: the particle-size check, the seed spread, the table."""
-import importlib.util
 import json
-import os
 
-from conftest import REPO
+from conftest import load_script
 
-spec = importlib.util.spec_from_file_location("collect", os.path.join(REPO, "scripts", "collect_tilting_table.py"))
-collect = importlib.util.module_from_spec(spec)
-spec.loader.exec_module(collect)
+collect = load_script("collect_tilting_table")
 
 
 def summary(rmax: float, tilt, phi: list, strength: float = 130e3, arrangement: str = "ideal", **numerics) -> dict:

@@ -5,6 +5,7 @@ import os
 import xml.etree.ElementTree as ET
 
 import pytest
+from conftest import load_script
 from lattice import R, material
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
@@ -83,12 +84,7 @@ def test_resumed_series_continues_numbering_and_displacements(empty_scene, tmp_p
 
 def test_bond_stress_history_reads_the_series_back(empty_scene, tmp_path, capsys):
     """scripts/bond_stress_history.py: per snapshot the stage's tilt, bond counts and the peak stress."""
-    import importlib.util
-    from conftest import REPO
-    spec = importlib.util.spec_from_file_location("history", os.path.join(REPO, "scripts", "bond_stress_history.py"))
-    history = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(history)
-
+    history = load_script("bond_stress_history")
     rock = material()
     O.bodies.append([scene.disc((0, 0), R, rock, fixed=True), scene.disc((0, 2 * R), R, rock, fixed=True)])
     O.engines = scene.engines(gravity=(0, 0, 0))
