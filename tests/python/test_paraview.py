@@ -99,3 +99,23 @@ def test_bond_stress_history_reads_the_series_back(empty_scene, tmp_path, capsys
     row = capsys.readouterr().out.splitlines()[2].split("|")
     assert sigma > 0 and [c.strip() for c in row[2:5]] == ["26", "1", "0 / 0"]
     assert float(row[5]) == pytest.approx(sigma / 1e3, abs=0.05)
+
+
+def test_list_breaks_reads_a_saved_scene(empty_scene, tmp_path, capsys):
+    """scripts/list_breaks.py: one row per break with its time, place, mode and the bonds left."""
+    breaks = load_script("list_breaks")
+    O.bodies.append([scene.disc((0, 0), R, material(bondTensileStrength=1e4), fixed=True),
+                     scene.disc((0, 2 * R), R, material(bondTensileStrength=1e4))])
+    O.engines = scene.engines(gravity=(0, 0, 0))
+    bonding.bond_within_gap(1e-9)
+    boundary.move([1], (0, 0.01))
+    while not scene.bond_law().breakMode:
+        when = O.time  # the time at the start of the step that breaks it
+        O.step()
+    O.save(str(tmp_path / "scene.yade.bz2"))
+    O.reset()
+    breaks.main(str(tmp_path / "scene.yade.bz2"))
+    row = [c.strip() for c in capsys.readouterr().out.splitlines()[3].split("|")[1:-1]]
+    assert float(row[0]) == pytest.approx(when, rel=1e-3) and when > 0
+    assert float(row[1]) == pytest.approx(0, abs=1e-4) and float(row[2]) == pytest.approx(R, rel=0.05)
+    assert row[3:] == ["tension", "0, 1", "0, 0"]
