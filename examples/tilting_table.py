@@ -275,10 +275,13 @@ def on_chunk() -> None:
     points.record()
     state["energy"].append((O.time, tilting.current_tilt(), utils.kineticEnergy()))  # the ramp shows as one
     phase = state["phase"]
-    if phase["name"] == "post":  # a known length: its ETA is this phase's end
-        progress(f"tilt {tilting.current_tilt():.1f} deg, after failure",
-                 remaining_time=max(0.0, table.post_failure_time - (O.time - phase["start"])))
-    else:  # the ETA is to max_tilt: an upper bound, as the run ends at the failure
+    known_length = {"ramp": (f"ramp to {table.start_tilt:g} deg", table.start_tilt / table.tilt_rate),
+                    "post": ("after failure", table.post_failure_time)}
+    if phase["name"] in known_length:  # its ETA is this phase's end
+        label, length = known_length[phase["name"]]
+        progress(f"tilt {tilting.current_tilt():.1f} deg, {label}",
+                 remaining_time=max(0.0, length - (O.time - phase["start"])))
+    else:  # the level table's length is not known; a stage's ETA is to max_tilt, an upper bound (it ends at failure)
         span = table.max_tilt - table.start_tilt
         progress(f"tilt {tilting.current_tilt():.1f} deg", (state["tilt"] - table.start_tilt) / span if span > 0 else None)
     if progress.wall_time - last_save > table.checkpoint_every:  # a stage of a fine packing runs for hours
