@@ -1,16 +1,19 @@
 """Peak bond stresses at every stage of a tilting-table run, from its ParaView series.
 
-    python3 scripts/bond_stress_history.py results/tilting_table/ideal_safety08
+    python3 scripts/bond_stress_history.py results/tilting_table/ideal_safety08 [30,40,50]
 
 For each snapshot (one per stage end, one after the post-failure run) prints the tilt of the
 stage it ends, the intact and broken bonds, and the three largest bond tensile stresses
 sigma_max and the largest shear stress tau of the intact bonds [kPa]: how close the rock is to
-its first crack, which is what a calibration of the bond strength moves.
+its first crack, which is what a calibration of the bond strength moves. Given stresses [kPa]
+(comma-separated), also how many intact bonds are above each: a few outliers crack first, but
+a slope fails when many bonds crack.
 """
 import json
 import os
 import sys
 import xml.etree.ElementTree as ET
+from typing import Sequence
 
 import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
@@ -42,10 +45,11 @@ def bond_arrays(path: str) -> dict[str, np.ndarray]:
     return {cells.GetArrayName(i): vtk_to_numpy(cells.GetArray(i)) for i in range(cells.GetNumberOfArrays())}
 
 
-def main(folder: str) -> None:
+def main(folder: str, above: Sequence[float] = ()) -> None:
     stages = stage_tilts(folder)
-    print("| time (s) | tilt (°) | intact | broken tension / shear | largest σ (kPa) | largest τ (kPa) |")
-    print("|---|---|---|---|---|---|")
+    print("| time (s) | tilt (°) | intact | broken tension / shear | largest σ (kPa) | largest τ (kPa) |"
+          + "".join(f" σ > {a:g} kPa |" for a in above))
+    print("|---|---|---|---|---|---|" + "---|" * len(above))
     for time, path in snapshots(folder):
         tilt = next((f"{t:g}" for end, t in stages if abs(end - time) < 1e-9), "after failure")
         bonds = bond_arrays(path)
@@ -53,10 +57,11 @@ def main(folder: str) -> None:
         sigma = np.sort(bonds["sigma_max"][intact])[::-1][:3] / 1e3
         tau = bonds["tau"][intact].max() / 1e3 if intact.any() else 0.0
         print(f"| {time:.3f} | {tilt} | {intact.sum()} | {(bonds['state'] == 2).sum()} / {(bonds['state'] == 3).sum()} | "
-              f"{', '.join(f'{s:.1f}' for s in sigma)} | {tau:.1f} |")
+              f"{', '.join(f'{s:.1f}' for s in sigma)} | {tau:.1f} |"
+              + "".join(f" {(bonds['sigma_max'][intact] > 1e3 * a).sum()} |" for a in above))
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 2:
+    if len(sys.argv) not in (2, 3):
         sys.exit(__doc__)
-    main(sys.argv[1])
+    main(sys.argv[1], [float(a) for a in sys.argv[2].split(",")] if len(sys.argv) == 3 else ())

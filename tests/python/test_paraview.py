@@ -95,10 +95,11 @@ def test_bond_stress_history_reads_the_series_back(empty_scene, tmp_path, capsys
     series.snapshot()
     sigma = O.interactions[0, 1].phys.bondSigmaMax
     (tmp_path / "summary.json").write_text(json.dumps({"stages": [{"time": O.time, "tilt": 26.0}]}))
-    history.main(str(tmp_path))
+    history.main(str(tmp_path), above=[0.5 * sigma / 1e3, 2 * sigma / 1e3])
     row = capsys.readouterr().out.splitlines()[2].split("|")
     assert sigma > 0 and [c.strip() for c in row[2:5]] == ["26", "1", "0 / 0"]
     assert float(row[5]) == pytest.approx(sigma / 1e3, abs=0.05)
+    assert [c.strip() for c in row[7:9]] == ["1", "0"]  # bonds above half and twice its stress
 
 
 def test_list_breaks_reads_a_saved_scene(empty_scene, tmp_path, capsys):
