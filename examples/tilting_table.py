@@ -271,14 +271,16 @@ def save_checkpoint() -> None:
     last_save = progress.wall_time
 
 
+KNOWN_LENGTH = {"ramp": (f"ramp to {table.start_tilt:g} deg", table.start_tilt / table.tilt_rate),
+                "post": ("after failure", table.post_failure_time)}  # phases whose ETA is their end
+
+
 def on_chunk() -> None:
     points.record()
     state["energy"].append((O.time, tilting.current_tilt(), utils.kineticEnergy()))  # the ramp shows as one
     phase = state["phase"]
-    known_length = {"ramp": (f"ramp to {table.start_tilt:g} deg", table.start_tilt / table.tilt_rate),
-                    "post": ("after failure", table.post_failure_time)}
-    if phase["name"] in known_length:  # its ETA is this phase's end
-        label, length = known_length[phase["name"]]
+    if phase["name"] in KNOWN_LENGTH:
+        label, length = KNOWN_LENGTH[phase["name"]]
         progress(f"tilt {tilting.current_tilt():.1f} deg, {label}",
                  remaining_time=max(0.0, length - (O.time - phase["start"])))
     else:  # the level table's length is not known; a stage's ETA is to max_tilt, an upper bound (it ends at failure)

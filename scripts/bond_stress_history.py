@@ -54,11 +54,12 @@ def main(folder: str, above: Sequence[float] = ()) -> None:
         tilt = next((f"{t:g}" for end, t in stages if abs(end - time) < 1e-9), "after failure")
         bonds = bond_arrays(path)
         intact = bonds["state"] == 1
-        sigma = np.sort(bonds["sigma_max"][intact])[::-1][:3] / 1e3
+        stresses = bonds["sigma_max"][intact]
+        sigma = np.sort(stresses)[::-1][:3] / 1e3
         tau = bonds["tau"][intact].max() / 1e3 if intact.any() else 0.0
         print(f"| {time:.3f} | {tilt} | {intact.sum()} | {(bonds['state'] == 2).sum()} / {(bonds['state'] == 3).sum()} | "
               f"{', '.join(f'{s:.1f}' for s in sigma)} | {tau:.1f} |"
-              + "".join(f" {(bonds['sigma_max'][intact] > 1e3 * a).sum()} |" for a in above))
+              + "".join(f" {(stresses > 1e3 * a).sum()} |" for a in above))
 
 
 if __name__ == "__main__":

@@ -63,7 +63,7 @@ def main() -> None:
         tilt = rate * (O.time - start)
         tilting.set_tilt(tilt)
         if first is None and len(law.breakMode):
-            first = (tilt, {2: "tensile", 3: "shear"}.get(law.breakMode[0], "?"))
+            first = (tilt, scene.BREAK_MODES[law.breakMode[0]])
         moved = math.dist(tuple(O.bodies[top].state.pos)[:2], reference[:2])
         if moved > 0.5 * width:  # bending alone moves it < 8 mm even at 90 deg
             break

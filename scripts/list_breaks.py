@@ -13,8 +13,6 @@ from yade import O
 
 from toppling import bonding, scene
 
-MODES = {2: "tension", 3: "shear"}
-
 
 def main(path: str) -> None:
     O.load(path)
@@ -23,7 +21,7 @@ def main(path: str) -> None:
     print("| t (s) | x (m) | y (m) | mode | discs | intact bonds left |")
     print("|---|---|---|---|---|---|")
     for t, p, mode, a, b in zip(law.breakTime, law.breakPosition, law.breakMode, law.breakId1, law.breakId2):
-        print(f"| {t:.4g} | {p[0]:.4f} | {p[1]:.4f} | {MODES[mode]} | {a}, {b} | "
+        print(f"| {t:.4g} | {p[0]:.4f} | {p[1]:.4f} | {scene.BREAK_MODES[mode]} | {a}, {b} | "
               f"{bonding.intact_bonds(a)}, {bonding.intact_bonds(b)} |")
 
 

@@ -23,7 +23,6 @@ readParamsFromTable(load="pull", compression=0.0, radius=0.01, tensile=1e6, cohe
 from yade.params import table  # noqa: E402  (filled by readParamsFromTable)
 
 STEPS_TO_BREAK = 2000
-MODES = {2: "tension", 3: "shear"}
 if table.load not in ("pull", "bend", "shear"):
     raise ValueError(f"load = {table.load!r} is invalid: it must be one of pull, bend, shear")
 weak_shear = table.load == "shear"  # make the other mode unreachable
@@ -72,12 +71,12 @@ else:
     measured = max(fs for _, fs, _ in history)
     reference, unit = (table.cohesion + sigma_at_break * math.tan(mat.bondFrictionAngle)) * A, "N"
 
-result = output.comparison(measured, reference, unit)
-output.write_summary(table.out, output.table_inputs(table), **result, mode=MODES[law.breakMode[0]],
+result, mode = output.comparison(measured, reference, unit), scene.BREAK_MODES[law.breakMode[0]]
+output.write_summary(table.out, output.table_inputs(table), **result, mode=mode,
                      sigma_at_break=sigma_at_break, released_energy=law.breakEnergy[0])
 fig, ax = output.figure("step", "bond load / predicted strength", f"Bond strength: {table.load}")
 column = {"pull": 0, "shear": 1, "bend": 2}[table.load]
 ax.plot([abs(h[column]) / reference for h in history])
 output.save_figure(fig, table.out, "load")
 print(f"{table.load}: peak {measured:.6g} {unit} (criterion {reference:.6g}, rel. error {result['rel_error']:.2e}), "
-      f"broke in {MODES[law.breakMode[0]]}")
+      f"broke in {mode}")

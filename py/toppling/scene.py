@@ -105,6 +105,9 @@ def functor(cls, dispatcher: str = "lawDispatcher"):
     raise LookupError(f"no {cls.__name__} in O.engines; build them with toppling.scene.engines()")
 
 
+BREAK_MODES = {2: "tension", 3: "shear"}  # the bond law's breakMode codes
+
+
 def bond_law() -> Law2_ScGeom_ParallelBondPhys_ParallelBond:
     """The scene's parallel-bond Law2 functor (holds the break records)."""
     return functor(Law2_ScGeom_ParallelBondPhys_ParallelBond)

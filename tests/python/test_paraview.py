@@ -27,6 +27,15 @@ def field(grid, name, cells=False):
     return vtk_to_numpy(data.GetArray(name))
 
 
+def pull_until_broken(body_id: int) -> float:
+    """Pull disc ``body_id`` off along +y until a bond breaks; the time of the step that broke it."""
+    boundary.move([body_id], (0, 0.01))
+    while not scene.bond_law().breakMode:
+        when = O.time
+        O.step()
+    return when
+
+
 def test_series_of_discs_bonds_and_joints(empty_scene, tmp_path):
     # pair A (x = 0): a weak bond, pulled apart until it breaks in tension;
     # pair B (x = 4R): a smooth joint; pair C (x = 8R): an intact bond.
@@ -40,9 +49,7 @@ def test_series_of_discs_bonds_and_joints(empty_scene, tmp_path):
                                    lo=(-R, -R), hi=(10 * R, 4 * R))
     series = paraview.ParaViewSeries(str(tmp_path), system.blockOfBody)
     series.snapshot()
-    boundary.move([1], (0, 0.01))
-    while not scene.bond_law().breakMode:
-        O.step()
+    pull_until_broken(1)
     O.run(10, True)
     paths = series.snapshot()
     assert [os.path.basename(p) for p in paths] == ["discs_00001.vtu", "bonds_00001.vtu", "joints_00001.vtu"]
@@ -109,10 +116,7 @@ def test_list_breaks_reads_a_saved_scene(empty_scene, tmp_path, capsys):
                      scene.disc((0, 2 * R), R, material(bondTensileStrength=1e4))])
     O.engines = scene.engines(gravity=(0, 0, 0))
     bonding.bond_within_gap(1e-9)
-    boundary.move([1], (0, 0.01))
-    while not scene.bond_law().breakMode:
-        when = O.time  # the time at the start of the step that breaks it
-        O.step()
+    when = pull_until_broken(1)
     O.save(str(tmp_path / "scene.yade.bz2"))
     O.reset()
     breaks.main(str(tmp_path / "scene.yade.bz2"))
