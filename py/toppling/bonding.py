@@ -7,6 +7,7 @@ from typing import Iterator, Optional, Sequence
 from yade import O, utils
 from yade.wrapper import Sphere
 
+from toppling import packing
 from toppling.scene import limit_timestep
 
 
@@ -16,26 +17,12 @@ def _sphere_ids(ids: Optional[Sequence[int]]) -> list[int]:
 
 
 def pairs_within_gap(gap: float, ids: Optional[Sequence[int]] = None) -> Iterator[tuple[int, int]]:
-    """Pairs of spheres whose surfaces are at most ``gap`` apart (overlapping pairs too).
-
-    A uniform cell grid of the largest diameter plus the gap keeps it O(N).
-    """
+    """Pairs (i < j) of spheres whose surfaces are at most ``gap`` apart (overlapping pairs too)."""
     spheres = _sphere_ids(ids)
-    if not spheres:
-        return
-    radius = {i: O.bodies[i].shape.radius for i in spheres}
-    pos = {i: O.bodies[i].state.pos for i in spheres}
-    cell = 2 * max(radius.values()) + gap
-    grid = defaultdict(list)
-    for i in spheres:
-        grid[(int(pos[i][0] // cell), int(pos[i][1] // cell))].append(i)
-    for (cx, cy), members in grid.items():
-        for dx in (-1, 0, 1):
-            for dy in (-1, 0, 1):
-                for j in grid.get((cx + dx, cy + dy), ()):
-                    for i in members:
-                        if i < j and (pos[i] - pos[j]).norm() <= radius[i] + radius[j] + gap:
-                            yield i, j
+    centres = [tuple(O.bodies[i].state.pos)[:2] for i in spheres]
+    radii = [O.bodies[i].shape.radius for i in spheres]
+    for i, j in packing.pairs_within(centres, radii, gap):
+        yield min(spheres[i], spheres[j]), max(spheres[i], spheres[j])
 
 
 def remove_floaters(gap: float = 0.0, min_neighbours: int = 2, ids: Optional[Sequence[int]] = None) -> list[int]:

@@ -11,7 +11,9 @@ from __future__ import annotations
 import math
 import random
 import time
+from collections import defaultdict
 from dataclasses import dataclass, field
+from typing import Iterator, Sequence
 
 from yade import O, utils
 from yade.wrapper import (Bo1_Facet_Aabb, Bo1_Sphere_Aabb, FrictMat, ForceResetter,
@@ -89,6 +91,43 @@ def _overlaps() -> list[float]:
     """Overlaps of touching disc pairs in the current scene [m]."""
     return [i.geom.penetrationDepth for i in O.interactions
             if i.isReal and isinstance(O.bodies[i.id1].shape, Sphere) and isinstance(O.bodies[i.id2].shape, Sphere)]
+
+
+def pairs_within(centres: Sequence[tuple[float, float]], radii: Sequence[float], gap: float) -> Iterator[tuple[int, int]]:
+    """Index pairs (i < j) of discs whose surfaces are at most ``gap`` apart (overlapping pairs too).
+
+    A uniform cell grid of the largest diameter plus the gap keeps it O(N).
+    """
+    if not radii:
+        return
+    cell = 2 * max(radii) + gap
+    grid = defaultdict(list)
+    for i, (x, y) in enumerate(centres):
+        grid[(int(x // cell), int(y // cell))].append(i)
+    for (cx, cy), members in grid.items():
+        for dx in (-1, 0, 1):
+            for dy in (-1, 0, 1):
+                for j in grid.get((cx + dx, cy + dy), ()):
+                    for i in members:
+                        if i < j and math.dist(centres[i], centres[j]) <= radii[i] + radii[j] + gap:
+                            yield i, j
+
+
+def shrink_overlaps(discs: Sequence[tuple[float, float, float]]) -> list[tuple[float, float, float]]:
+    """The discs (x, y, r), each shrunk by half its largest overlap, so that no two overlap.
+
+    A relaxed packing still holds small overlaps (up to a few % of Rmin where it jams), whose
+    contact force a stress-free bond installed over them must take up in tension as soon as the
+    run starts: enough to break weak bonds before gravity acts. Shrinking removes that locked-in
+    force at a porosity change of the order of the mean overlap over R.
+    """
+    centres = [(x, y) for x, y, _ in discs]
+    radii = [r for _, _, r in discs]
+    shrink = [0.0] * len(discs)
+    for i, j in pairs_within(centres, radii, 0.0):
+        half = 0.5 * (radii[i] + radii[j] - math.dist(centres[i], centres[j]))
+        shrink[i], shrink[j] = max(shrink[i], half), max(shrink[j], half)
+    return [(x, y, r - s) for (x, y, r), s in zip(discs, shrink)]
 
 
 def pack_polygon(polygon: PolygonRegion, rmin: float, rmax: float, porosity: float = 0.15,

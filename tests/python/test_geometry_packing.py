@@ -1,5 +1,6 @@
 """Cross-section predicates, joint-set geometry and the 2D packer, through YADE's Python."""
 import math
+import random
 
 import pytest
 from yade import pack
@@ -76,3 +77,29 @@ def test_packer_rejects_bad_input(empty_scene, kwargs, message):
     square = geometry.region([(0, 0), (0.05, 0), (0.05, 0.05), (0, 0.05)])
     with pytest.raises(ValueError, match=message):
         packing.pack_polygon(square, **kwargs)
+
+
+def _overlap(a, b):
+    return a[2] + b[2] - math.dist(a[:2], b[:2])
+
+
+def test_pairs_within_finds_exactly_the_pairs_a_brute_force_search_finds():
+    rng = random.Random(3)
+    discs = [(rng.uniform(0, 0.05), rng.uniform(0, 0.05), rng.uniform(1e-3, 4e-3)) for _ in range(300)]
+    gap = 5e-4
+    expected = {(i, j) for i in range(len(discs)) for j in range(i + 1, len(discs)) if _overlap(discs[i], discs[j]) >= -gap}
+    found = list(packing.pairs_within([d[:2] for d in discs], [d[2] for d in discs], gap))
+    assert len(found) == len(set(found)) and set(found) == expected
+
+
+def test_shrink_overlaps_leaves_no_overlap_and_shrinks_by_half_the_largest():
+    two = packing.shrink_overlaps([(0, 0, 1.0), (1.8, 0, 1.0), (5, 0, 1.0)])  # overlap 0.2; a third apart
+    assert two == [(0, 0, pytest.approx(0.9)), (1.8, 0, pytest.approx(0.9)), (5, 0, 1.0)]
+    rng = random.Random(5)
+    discs = [(rng.uniform(0, 0.05), rng.uniform(0, 0.05), rng.uniform(1e-3, 4e-3)) for _ in range(300)]
+    shrunk = packing.shrink_overlaps(discs)
+    worst = max(_overlap(a, b) for k, a in enumerate(shrunk) for b in shrunk[k + 1:])
+    assert worst <= 1e-15  # touching at most
+    for k, (disc, after) in enumerate(zip(discs, shrunk)):  # no disc shrinks more than it must
+        largest = max([_overlap(disc, other) for m, other in enumerate(discs) if m != k] + [0.0])
+        assert disc[2] - after[2] == pytest.approx(0.5 * largest, abs=1e-15)

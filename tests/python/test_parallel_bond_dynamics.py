@@ -5,7 +5,7 @@ import pytest
 from lattice import R, bonded_lattice, leapfrog_energy, material
 from yade import O
 
-from toppling import bonding, scene
+from toppling import bonding, packing, scene
 
 
 def shake(ids, speed=0.01, seed=1):
@@ -140,3 +140,25 @@ def test_rock_is_the_discs_held_by_two_bonds_not_a_loose_pair(empty_scene):
     assert bonding.bond_within_gap(1e-6 * R, ids) == 3 + 1
     assert bonding.rock(ids) == ids[1:3]
     assert bonding.rock(ids, min_bonds=1) == ids
+
+
+@pytest.mark.parametrize("shrink", [False, True])
+def test_a_bond_installed_over_an_overlap_takes_the_contact_force_in_tension(empty_scene, shrink):
+    """Two discs overlapping by u, bonded stress-free: at rest the bond holds the contact spring
+    apart, tension kc kb u / (kc + kb) (springs in parallel); shrink_overlaps removes it."""
+    u = 0.01 * R
+    discs = [(0.0, 0.0, R), (2 * R - u, 0.0, R)]
+    if shrink:
+        discs = packing.shrink_overlaps(discs)
+    ids = scene.add_discs(discs, material())
+    O.bodies[ids[0]].state.blockedDOFs = "xyzXYZ"
+    O.bodies[ids[1]].state.blockedDOFs = "yzXYZ"
+    O.engines = scene.engines(gravity=(0, 0, 0), local_damping=0.7)
+    O.step()
+    assert bonding.bond_within_gap(1e-6 * R, ids) == 1
+    O.run(3000, True)
+    phys = O.interactions[ids[0], ids[1]].phys
+    kb = phys.bondKn * phys.bondArea
+    expected = 0.0 if shrink else -phys.contactKn * kb * u / (phys.contactKn + kb)
+    assert phys.bondNormalForce == pytest.approx(expected, rel=1e-3, abs=1e-9 * kb * u)
+    assert abs(O.bodies[ids[1]].state.vel[0]) < 1e-9

@@ -18,3 +18,10 @@ def test_a_time_step_safety_outside_0_1_stops_the_run(tmp_path, safety):
     assert proc.returncode != 0
     assert f"timestep_safety = {safety} is invalid: it must be in (0, 1]" in proc.stderr + proc.stdout
     assert not (tmp_path / "out").exists()
+
+
+def test_shrink_overlaps_other_than_0_or_1_stops_the_run(tmp_path):
+    proc = run_yade("examples/tilting_table.py", tmp_path, rmin=0.002, rmax=0.008, shrink_overlaps=2)
+    assert proc.returncode != 0
+    assert "shrink_overlaps = 2 is invalid: it must be 0 or 1" in proc.stderr + proc.stdout
+    assert not (tmp_path / "out").exists()
