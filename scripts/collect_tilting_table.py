@@ -15,6 +15,7 @@ import sys
 
 CALIBRATION = ("bond_tensile_strength", "main_joint_friction", "base_joint_friction")  # 0: the thesis' tables
 NUMERICS = {"timestep_safety": 0.5, "seed": 1}  # the example's defaults (older summaries lack the key)
+ADDED = {"shrink_overlaps": 0}  # model inputs newer than some summaries: the value those runs had
 SIZE_TOLERANCE_DEG = 2.0
 
 
@@ -37,7 +38,8 @@ def load(folder: str) -> dict[str, dict]:
 
 def model_key(inputs: dict) -> tuple:
     """What defines the model apart from the particle size."""
-    return (inputs["arrangement"],) + tuple(inputs.get(name) for name in CALIBRATION)
+    return ((inputs["arrangement"],) + tuple(inputs.get(name) for name in CALIBRATION)
+            + tuple(inputs.get(name, value) for name, value in ADDED.items()))
 
 
 def numerics(inputs: dict) -> dict:
@@ -105,6 +107,7 @@ def main(folder: str) -> None:
         stable = [stage["tilt"] for stage in s["stages"] if stage["outcome"] == "equilibrium"]
         changed = [f"{knob} {inputs[knob]:g}" for knob in CALIBRATION if inputs.get(knob)] or ["Tables 5-2/5-3"]
         changed += [f"{knob} {value:g}" for knob, value in numerics(inputs).items() if value != NUMERICS[knob]]
+        changed += [f"{knob} {inputs[knob]:g}" for knob in ADDED if inputs.get(knob, ADDED[knob]) != ADDED[knob]]
         changed = ", ".join(changed)
         rows.append(f"| {name} | {inputs['arrangement']} | {changed} | "
                     f"{1e3 * inputs['rmin']:g}–{1e3 * inputs['rmax']:g} | {s['discs']} | "

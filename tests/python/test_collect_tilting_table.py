@@ -26,6 +26,13 @@ def test_a_different_number_of_surfaces_fails_the_check():
     assert collect.size_check(runs) == ["| fine vs coarse | +0.0 | 2 vs 1 surfaces | no |"]
 
 
+def test_a_model_with_shrunk_overlaps_is_compared_only_with_its_own_kind():
+    runs = {"coarse": summary(0.008, 34.0, [16.0]), "fine_shrunk": summary(0.004, 38.0, [12.0], shrink_overlaps=1),
+            "coarse_shrunk": summary(0.008, 37.0, [12.5], shrink_overlaps=1), "fine_old": summary(0.004, 33.0, [15.0], shrink_overlaps=0)}
+    assert sorted(collect.size_check(runs)) == ["| fine_old vs coarse | -1.0 | -1.0 | yes |",
+                                                "| fine_shrunk vs coarse_shrunk | +1.0 | -0.5 | yes |"]
+
+
 def test_a_finer_packing_is_compared_with_the_coarse_run_of_its_own_time_step():
     runs = {"coarse": summary(0.008, 34.0, [16.0]), "coarse_fast": summary(0.008, 30.0, [10.0], timestep_safety=0.8),
             "fine_fast": summary(0.004, 31.0, [11.0], timestep_safety=0.8)}
