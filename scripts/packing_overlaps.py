@@ -28,8 +28,8 @@ def bonded_discs(out: str) -> tuple[list[int], list[tuple[float, float]], list[f
 
 def report(out: str) -> str:
     ids, centres, radii = bonded_discs(out)
-    overlaps = sorted(((radii[i] + radii[j] - math.dist(centres[i], centres[j]), ids[i], ids[j])
-                       for i, j in packing.pairs_within(centres, radii, 0.0)), reverse=True)
+    overlaps = sorted(((radii[i] + radii[j] - distance, ids[i], ids[j])
+                       for i, j, distance in packing.pairs_within(centres, radii, 0.0)), reverse=True)
     area = math.pi * sum(r * r for r in radii)
     positive = np.array([u for u, _, _ in overlaps if u > 0])
     if not positive.size:

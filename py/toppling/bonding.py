@@ -18,11 +18,11 @@ def _sphere_ids(ids: Optional[Sequence[int]]) -> list[int]:
 
 def pairs_within_gap(gap: float, ids: Optional[Sequence[int]] = None) -> Iterator[tuple[int, int]]:
     """Pairs (i < j) of spheres whose surfaces are at most ``gap`` apart (overlapping pairs too)."""
-    spheres = _sphere_ids(ids)
+    spheres = sorted(_sphere_ids(ids))  # index order = id order
     centres = [tuple(O.bodies[i].state.pos)[:2] for i in spheres]
     radii = [O.bodies[i].shape.radius for i in spheres]
-    for i, j in packing.pairs_within(centres, radii, gap):
-        yield min(spheres[i], spheres[j]), max(spheres[i], spheres[j])
+    for i, j, _ in packing.pairs_within(centres, radii, gap):
+        yield spheres[i], spheres[j]
 
 
 def remove_floaters(gap: float = 0.0, min_neighbours: int = 2, ids: Optional[Sequence[int]] = None) -> list[int]:

@@ -93,8 +93,10 @@ def _overlaps() -> list[float]:
             if i.isReal and isinstance(O.bodies[i.id1].shape, Sphere) and isinstance(O.bodies[i.id2].shape, Sphere)]
 
 
-def pairs_within(centres: Sequence[tuple[float, float]], radii: Sequence[float], gap: float) -> Iterator[tuple[int, int]]:
-    """Index pairs (i < j) of discs whose surfaces are at most ``gap`` apart (overlapping pairs too).
+def pairs_within(centres: Sequence[tuple[float, float]], radii: Sequence[float],
+                 gap: float) -> Iterator[tuple[int, int, float]]:
+    """Index pairs (i, j, distance of centres), i < j, of discs whose surfaces are at most ``gap``
+    apart (overlapping pairs too).
 
     A uniform cell grid of the largest diameter plus the gap keeps it O(N).
     """
@@ -109,8 +111,10 @@ def pairs_within(centres: Sequence[tuple[float, float]], radii: Sequence[float],
             for dy in (-1, 0, 1):
                 for j in grid.get((cx + dx, cy + dy), ()):
                     for i in members:
-                        if i < j and math.dist(centres[i], centres[j]) <= radii[i] + radii[j] + gap:
-                            yield i, j
+                        if i < j:
+                            distance = math.dist(centres[i], centres[j])
+                            if distance <= radii[i] + radii[j] + gap:
+                                yield i, j, distance
 
 
 def shrink_overlaps(discs: Sequence[tuple[float, float, float]]) -> list[tuple[float, float, float]]:
@@ -124,8 +128,8 @@ def shrink_overlaps(discs: Sequence[tuple[float, float, float]]) -> list[tuple[f
     centres = [(x, y) for x, y, _ in discs]
     radii = [r for _, _, r in discs]
     shrink = [0.0] * len(discs)
-    for i, j in pairs_within(centres, radii, 0.0):
-        half = 0.5 * (radii[i] + radii[j] - math.dist(centres[i], centres[j]))
+    for i, j, distance in pairs_within(centres, radii, 0.0):
+        half = 0.5 * (radii[i] + radii[j] - distance)
         shrink[i], shrink[j] = max(shrink[i], half), max(shrink[j], half)
     return [(x, y, r - s) for (x, y, r), s in zip(discs, shrink)]
 

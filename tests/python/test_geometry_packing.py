@@ -88,7 +88,7 @@ def test_pairs_within_finds_exactly_the_pairs_a_brute_force_search_finds():
     discs = [(rng.uniform(0, 0.05), rng.uniform(0, 0.05), rng.uniform(1e-3, 4e-3)) for _ in range(300)]
     gap = 5e-4
     expected = {(i, j) for i in range(len(discs)) for j in range(i + 1, len(discs)) if _overlap(discs[i], discs[j]) >= -gap}
-    found = list(packing.pairs_within([d[:2] for d in discs], [d[2] for d in discs], gap))
+    found = [(i, j) for i, j, _ in packing.pairs_within([d[:2] for d in discs], [d[2] for d in discs], gap)]
     assert len(found) == len(set(found)) and set(found) == expected
 
 
