@@ -121,7 +121,7 @@ from toppling import (analysis, bonding, boundary, columns, geometry, joints, mo
 readParamsFromTable(arrangement="ideal", rmin=1e-3, rmax=4e-3, porosity=0.18, seed=1, start_tilt=20.0, step=1.0,
                     max_tilt=45.0, tilt_rate=50.0, damping=0.7, chunk=0.02, rest_speed=1e-3, fail_displacement=0.05,
                     max_stage_time=2.0, post_failure_time=0.3, timestep_safety=0.5, bond_tensile_strength=0.0,
-                    main_joint_friction=0.0, base_joint_friction=0.0, shrink_overlaps=1,
+                    main_joint_friction=0.0, base_joint_friction=0.0, shrink_overlaps=1, joint_stiffness_scale=1.0,
                     resume=-1, checkpoint_every=600.0, out="results/tilting_table", noTableOk=True)
 from yade.params import table  # noqa: E402  (filled by readParamsFromTable)
 
@@ -150,6 +150,9 @@ if not (0 <= table.start_tilt <= table.max_tilt < 90 and table.step > 0 and tabl
 scene.check_safety(table.timestep_safety, "timestep_safety")  # before the out folder is made
 if table.shrink_overlaps not in (0, 1):
     raise ValueError(f"shrink_overlaps = {table.shrink_overlaps} is invalid: it must be 0 or 1")
+if not 0 < table.joint_stiffness_scale <= 1:
+    raise ValueError(f"joint_stiffness_scale = {table.joint_stiffness_scale} is invalid: it must be in (0, 1] "
+                     "(1: Table 5-3's joint stiffnesses)")
 if table.arrangement not in TABLE_5_2:
     raise ValueError(f"arrangement = {table.arrangement!r} is invalid: it must be 'ideal' or 'random'")
 # Calibration knobs the issue allows (0: the table's value); stay within the thesis' ranges,
@@ -163,8 +166,9 @@ for name, (lo, hi) in CALIBRATION_RANGES.items():
 if table.bond_tensile_strength:
     TABLE_5_2[table.arrangement]["bondTensileStrength"] = table.bond_tensile_strength
 main_joints, base_joints, gap = TABLE_5_3[table.arrangement]
-TABLE_5_3[table.arrangement] = ((main_joints[0], table.main_joint_friction or main_joints[1]),
-                                (base_joints[0], table.base_joint_friction or base_joints[1]), gap)
+scale = table.joint_stiffness_scale
+TABLE_5_3[table.arrangement] = ((scale * main_joints[0], table.main_joint_friction or main_joints[1]),
+                                (scale * base_joints[0], table.base_joint_friction or base_joints[1]), gap)
 criteria = tilting.StageCriteria(table.chunk, table.rest_speed, table.fail_displacement, table.max_stage_time)
 
 
@@ -246,7 +250,7 @@ def column_top_bands(members: dict[int, list], depth: float) -> list[list[int]]:
 FREE = ("resume", "checkpoint_every", "max_tilt", "post_failure_time")  # may change in a continued run
 inputs = output.table_inputs(table)
 checkpoint = monitor.Checkpoint(table.out)
-ADDED = {"shrink_overlaps": 0}  # parameters newer than some checkpoints: the value those runs had
+ADDED = {"shrink_overlaps": 0, "joint_stiffness_scale": 1.0}  # parameters newer than some checkpoints: the value those runs had
 if checkpoint.continues(inputs, table.resume, free=FREE, added=ADDED):
     state = checkpoint.load()
     print(f"resuming {table.out} in its {state['phase']['name']} phase at {state['tilt']} deg "

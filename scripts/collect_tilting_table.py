@@ -14,7 +14,7 @@ import sys
 
 
 CALIBRATION = ("bond_tensile_strength", "main_joint_friction", "base_joint_friction")  # 0: the thesis' tables
-NUMERICS = {"timestep_safety": 0.5, "seed": 1}  # the example's defaults (older summaries lack the key)
+NUMERICS = {"timestep_safety": 0.5, "seed": 1, "joint_stiffness_scale": 1.0}  # defaults (older summaries lack keys)
 ADDED = {"shrink_overlaps": 0}  # model inputs newer than some summaries: the value those runs had
 SIZE_TOLERANCE_DEG = 2.0
 
@@ -80,7 +80,9 @@ def seed_spread(runs: dict[str, dict]) -> list[str]:
     for s in runs.values():
         if s["failure_tilt_deg"] is not None:
             inputs = s["inputs"]
-            key = model_key(inputs) + (inputs["rmin"], inputs["rmax"], numerics(inputs)["timestep_safety"])
+            settings = numerics(inputs)
+            key = model_key(inputs) + (inputs["rmin"], inputs["rmax"], settings["timestep_safety"],
+                                       settings["joint_stiffness_scale"])
             groups.setdefault(key, []).append(s)
     lines = []
     for key, group in groups.items():
@@ -90,7 +92,8 @@ def seed_spread(runs: dict[str, dict]) -> list[str]:
         phis = [s["phi_deg"][0] for s in group if s["phi_deg"]]
         seeds = ", ".join(str(numerics(s["inputs"])["seed"]) for s in group)
         phi_range = f"{min(phis):.1f}–{max(phis):.1f}" if phis else "-"
-        lines.append(f"| {key[0]} R {1e3 * key[-3]:g}–{1e3 * key[-2]:g} mm, safety {key[-1]:g} | {seeds} | "
+        joints = f", joint stiffness x {key[-1]:g}" if key[-1] != 1 else ""
+        lines.append(f"| {key[0]} R {1e3 * key[-4]:g}–{1e3 * key[-3]:g} mm, safety {key[-2]:g}{joints} | {seeds} | "
                      f"{min(tilts):.1f}–{max(tilts):.1f} | {phi_range} |")
     return lines
 

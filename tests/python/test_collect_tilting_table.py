@@ -39,6 +39,13 @@ def test_a_finer_packing_is_compared_with_the_coarse_run_of_its_own_time_step():
     assert collect.size_check(runs) == ["| fine_fast vs coarse_fast | +1.0 | 1.0 | yes |"]
 
 
+def test_a_finer_packing_with_softened_joints_is_compared_with_the_coarse_run_of_the_same_joints():
+    runs = {"coarse": summary(0.008, 32.0, [18.5], timestep_safety=0.8),
+            "coarse_soft": summary(0.008, 30.0, [12.0], timestep_safety=0.8, joint_stiffness_scale=0.01),
+            "fine_soft": summary(0.004, 31.0, [13.0], timestep_safety=0.8, joint_stiffness_scale=0.01)}
+    assert collect.size_check(runs) == ["| fine_soft vs coarse_soft | +1.0 | 1.0 | yes |"]
+
+
 def test_seeds_give_the_spread_of_one_model_and_a_finer_packing_meets_its_own_seed():
     runs = {"s1": summary(0.008, 32.0, [8.1]), "s2": summary(0.008, 34.0, [18.5], seed=2),
             "s3": summary(0.008, 32.0, [12.0], seed=3), "fine_s2": summary(0.004, 33.0, [17.0], seed=2),

@@ -25,3 +25,11 @@ def test_shrink_overlaps_other_than_0_or_1_stops_the_run(tmp_path):
     assert proc.returncode != 0
     assert "shrink_overlaps = 2 is invalid: it must be 0 or 1" in proc.stderr + proc.stdout
     assert not (tmp_path / "out").exists()
+
+
+@pytest.mark.parametrize("scale", [0.0, 2.0])
+def test_a_joint_stiffness_scale_outside_0_1_stops_the_run(tmp_path, scale):
+    proc = run_yade("examples/tilting_table.py", tmp_path, rmin=0.002, rmax=0.008, joint_stiffness_scale=scale)
+    assert proc.returncode != 0
+    assert f"joint_stiffness_scale = {scale} is invalid: it must be in (0, 1]" in proc.stderr + proc.stdout
+    assert not (tmp_path / "out").exists()
