@@ -6,7 +6,7 @@ sees them once they carry force), then times the step: best of BENCH_REPEATS (3)
 discs, interactions, dt, steps per second and simulated seconds per wall hour, which with the
 2-3 s a run simulates says how long a packing takes.
 
-    ./yade -x -n -j1 scripts/benchmark_tilting_table.py [rmin rmax [arrangement]]
+    ./yade -x -n -j1 scripts/benchmark_tilting_table.py [rmin rmax [arrangement [joint_stiffness_scale]]]
 """
 import os
 import sys
@@ -20,9 +20,9 @@ from tilting_table_model import definitions  # noqa: E402
 WARM_UP, STEPS, REPEATS = 2000, 2000, int(os.environ.get("BENCH_REPEATS", "3"))
 
 
-def build(rmin: float, rmax: float, arrangement: str) -> None:
+def build(rmin: float, rmax: float, arrangement: str, joint_stiffness_scale: float) -> None:
     """The example's scene, without running it: its build()."""
-    definitions(arrangement=f"'{arrangement}'", rmin=rmin, rmax=rmax)["build"]()
+    definitions(arrangement=f"'{arrangement}'", rmin=rmin, rmax=rmax, joint_stiffness_scale=joint_stiffness_scale)["build"]()
 
 
 def time_steps() -> dict:
@@ -41,8 +41,10 @@ def main() -> None:
     args = sys.argv[1:]
     rmin, rmax = (float(args[0]), float(args[1])) if len(args) >= 2 else (2e-3, 8e-3)
     arrangement = args[2] if len(args) >= 3 else "ideal"
-    print(f"tilting table, {arrangement}, R {1e3 * rmin:g}-{1e3 * rmax:g} mm, {O.numThreads} thread(s)")
-    build(rmin, rmax, arrangement)
+    scale = float(args[3]) if len(args) >= 4 else 1.0
+    print(f"tilting table, {arrangement}, R {1e3 * rmin:g}-{1e3 * rmax:g} mm, joint stiffness x {scale:g}, "
+          f"{O.numThreads} thread(s)")
+    build(rmin, rmax, arrangement, scale)
     r = time_steps()
     print("| discs | interactions | dt (s) | steps/s | simulated s per wall hour |")
     print("|---|---|---|---|---|")

@@ -16,6 +16,7 @@ import sys
 CALIBRATION = ("bond_tensile_strength", "main_joint_friction", "base_joint_friction")  # 0: the thesis' tables
 NUMERICS = {"timestep_safety": 0.5, "seed": 1, "joint_stiffness_scale": 1.0}  # defaults (older summaries lack keys)
 ADDED = {"shrink_overlaps": 0}  # model inputs newer than some summaries: the value those runs had
+RUN_ONLY = ("out", "resume", "checkpoint_every", "max_tilt", "post_failure_time")  # no part of the model
 SIZE_TOLERANCE_DEG = 2.0
 
 
@@ -98,6 +99,30 @@ def seed_spread(runs: dict[str, dict]) -> list[str]:
     return lines
 
 
+def joint_stiffness_check(runs: dict[str, dict]) -> list[str]:
+    """Lines comparing each run with softened joints (joint_stiffness_scale < 1) with the run
+    that differs from it only in that, at Table 5-3's stiffness: the failure tilt and phi it
+    changes, and the time step and wall time it gains (wall times compare on one machine)."""
+    def rest(inputs: dict) -> dict:
+        full = {**ADDED, **NUMERICS, **inputs}
+        return {k: v for k, v in full.items() if k not in RUN_ONLY + ("joint_stiffness_scale",)}
+
+    lines = []
+    for name, s in runs.items():
+        scale = numerics(s["inputs"])["joint_stiffness_scale"]
+        stiff = [(n, r) for n, r in runs.items() if numerics(r["inputs"])["joint_stiffness_scale"] == 1
+                 and rest(r["inputs"]) == rest(s["inputs"])]
+        if scale == 1 or not stiff or s["failure_tilt_deg"] is None or stiff[0][1]["failure_tilt_deg"] is None:
+            continue
+        ref_name, ref = stiff[0]
+        phi = fmt([a - b for a, b in zip(s["phi_deg"], ref["phi_deg"])]) if len(s["phi_deg"]) == len(ref["phi_deg"]) \
+            else f"{len(s['phi_deg'])} vs {len(ref['phi_deg'])} surfaces"
+        dt_gain = (s["simulated_time"] / s["steps"]) / (ref["simulated_time"] / ref["steps"])
+        lines.append(f"| {name} vs {ref_name} | {scale:g} | {s['failure_tilt_deg'] - ref['failure_tilt_deg']:+.1f} | "
+                     f"{phi} | {dt_gain:.1f} | {ref['wall_time'] / s['wall_time']:.1f} |")
+    return lines
+
+
 def main(folder: str) -> None:
     runs = load(folder)
     rows = []
@@ -135,6 +160,13 @@ def main(folder: str) -> None:
         print("| model | seeds | failure tilt (°) | φ (°) |")
         print("|---|---|---|---|")
         print("\n".join(spreads))
+    softened = joint_stiffness_check(runs)
+    if softened:
+        print("\nJoint stiffness (softened minus Table 5-3's; time step and wall time: how many times larger / "
+              "smaller):\n")
+        print("| runs | joint stiffness x | failure tilt (°) | φ (°) | mean time step | wall time |")
+        print("|---|---|---|---|---|---|")
+        print("\n".join(softened))
 
 
 if __name__ == "__main__":

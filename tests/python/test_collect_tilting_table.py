@@ -46,6 +46,15 @@ def test_a_finer_packing_with_softened_joints_is_compared_with_the_coarse_run_of
     assert collect.size_check(runs) == ["| fine_soft vs coarse_soft | +1.0 | 1.0 | yes |"]
 
 
+def test_softened_joints_are_compared_with_the_same_run_at_table_stiffness():
+    def run(tilt, phi, steps, wall, out, **numerics):
+        return {**summary(0.008, tilt, phi, out=out, **numerics), "steps": steps, "simulated_time": 2.0, "wall_time": wall}
+    runs = {"stiff": run(32.0, [18.5], 1000000, 560.0, "a"),
+            "soft": run(32.0, [17.3], 125000, 80.0, "b", joint_stiffness_scale=0.01),
+            "soft_seed2": run(38.0, [17.6], 125000, 80.0, "c", joint_stiffness_scale=0.01, seed=2)}
+    assert collect.joint_stiffness_check(runs) == ["| soft vs stiff | 0.01 | +0.0 | -1.2 | 8.0 | 7.0 |"]
+
+
 def test_seeds_give_the_spread_of_one_model_and_a_finer_packing_meets_its_own_seed():
     runs = {"s1": summary(0.008, 32.0, [8.1]), "s2": summary(0.008, 34.0, [18.5], seed=2),
             "s3": summary(0.008, 32.0, [12.0], seed=3), "fine_s2": summary(0.004, 33.0, [17.0], seed=2),
