@@ -263,7 +263,8 @@ def column_top_bands(members: dict[int, list], depth: float) -> list[list[int]]:
 FREE = ("resume", "checkpoint_every", "max_tilt", "post_failure_time")  # may change in a continued run
 inputs = output.table_inputs(table)
 checkpoint = monitor.Checkpoint(table.out)
-ADDED = {"shrink_overlaps": 0, "joint_stiffness_scale": 1.0}  # parameters newer than some checkpoints: the value those runs had
+# parameters newer than some checkpoints: the value those runs had
+ADDED = {"shrink_overlaps": 0, "joint_stiffness_scale": 1.0}
 if checkpoint.continues(inputs, table.resume, free=FREE, added=ADDED):
     state = checkpoint.load()
     print(f"resuming {table.out} in its {state['phase']['name']} phase at {state['tilt']} deg "

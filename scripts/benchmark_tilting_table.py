@@ -22,7 +22,8 @@ WARM_UP, STEPS, REPEATS = 2000, 2000, int(os.environ.get("BENCH_REPEATS", "3"))
 
 def build(rmin: float, rmax: float, arrangement: str, joint_stiffness_scale: float) -> None:
     """The example's scene, without running it: its build()."""
-    definitions(arrangement=f"'{arrangement}'", rmin=rmin, rmax=rmax, joint_stiffness_scale=joint_stiffness_scale)["build"]()
+    definitions(arrangement=f"'{arrangement}'", rmin=rmin, rmax=rmax,
+                joint_stiffness_scale=joint_stiffness_scale)["build"]()
 
 
 def time_steps() -> dict:

@@ -11,6 +11,7 @@ import glob
 import json
 import os
 import sys
+from typing import Optional
 
 
 CALIBRATION = ("bond_tensile_strength", "main_joint_friction", "base_joint_friction")  # 0: the thesis' tables
@@ -47,6 +48,15 @@ def numerics(inputs: dict) -> dict:
     return {name: inputs.get(name, default) for name, default in NUMERICS.items()}
 
 
+def phi_change(s: dict, ref: dict) -> tuple[Optional[list[float]], str]:
+    """phi of run ``s`` minus that of ``ref``, surface by surface (None if they have different
+    numbers of surfaces), and its text for a table."""
+    if len(s["phi_deg"]) != len(ref["phi_deg"]):
+        return None, f"{len(s['phi_deg'])} vs {len(ref['phi_deg'])} surfaces"
+    phi = [a - b for a, b in zip(s["phi_deg"], ref["phi_deg"])]
+    return phi, fmt(phi)
+
+
 def size_check(runs: dict[str, dict]) -> list[str]:
     """Lines comparing each packing of a model with the next coarser one (of the same numerical
     settings where there is one): R 1-2.5 mm with R 1-4 mm, the issue's pair, and R 1-4 mm with
@@ -64,12 +74,8 @@ def size_check(runs: dict[str, dict]) -> list[str]:
             same = [run for run in coarser if numerics(run[1]["inputs"]) == numerics(s["inputs"])]
             coarse_name, coarse = min(same or coarser, key=lambda run: run[1]["inputs"]["rmax"])
             tilt = s["failure_tilt_deg"] - coarse["failure_tilt_deg"]
-            if len(s["phi_deg"]) == len(coarse["phi_deg"]):
-                phi = [a - b for a, b in zip(s["phi_deg"], coarse["phi_deg"])]
-                ok = all(abs(d) <= SIZE_TOLERANCE_DEG for d in [tilt, *phi])
-                phi_text = fmt(phi)
-            else:
-                ok, phi_text = False, f"{len(s['phi_deg'])} vs {len(coarse['phi_deg'])} surfaces"
+            phi, phi_text = phi_change(s, coarse)
+            ok = phi is not None and all(abs(d) <= SIZE_TOLERANCE_DEG for d in [tilt, *phi])
             lines.append(f"| {name} vs {coarse_name} | {tilt:+.1f} | {phi_text} | {'yes' if ok else 'no'} |")
     return lines
 
@@ -115,8 +121,7 @@ def joint_stiffness_check(runs: dict[str, dict]) -> list[str]:
         if scale == 1 or not stiff or s["failure_tilt_deg"] is None or stiff[0][1]["failure_tilt_deg"] is None:
             continue
         ref_name, ref = stiff[0]
-        phi = fmt([a - b for a, b in zip(s["phi_deg"], ref["phi_deg"])]) if len(s["phi_deg"]) == len(ref["phi_deg"]) \
-            else f"{len(s['phi_deg'])} vs {len(ref['phi_deg'])} surfaces"
+        _, phi = phi_change(s, ref)
         dt_gain = (s["simulated_time"] / s["steps"]) / (ref["simulated_time"] / ref["steps"])
         lines.append(f"| {name} vs {ref_name} | {scale:g} | {s['failure_tilt_deg'] - ref['failure_tilt_deg']:+.1f} | "
                      f"{phi} | {dt_gain:.1f} | {ref['wall_time'] / s['wall_time']:.1f} |")
