@@ -5,7 +5,9 @@ ParaView reads a time series from (VTK has no writer for it), rewritten at every
 that a run stopped early can still be opened.
 
 * discs: points with radius, displacement (from the positions when the series started),
-  velocity, block id, fixed flag (Glyph with the radius as scale to see discs);
+  velocity, block id, ``fixed`` 1 where a boundary condition prescribes the disc's motion
+  (a non-dynamic disc, or x or y blocked: the table's fixed layer, platens) (Glyph with the
+  radius as scale to see discs);
 * bonds: lines between bonded discs, ``state`` 1 intact, 2 broken in tension, 3 broken in
   shear (broken bonds from the law's break records), ``sigma_max`` and ``tau`` [Pa];
 * joints: lines between the discs of each smooth-joint contact with joint set, normal and
@@ -96,7 +98,7 @@ class ParaViewSeries:
             "displacement": pos - self.reference,
             "velocity": np.array([tuple(b.state.vel) for b in bodies]),
             "block": block,
-            "fixed": [0 if b.dynamic else 1 for b in bodies],
+            "fixed": [int(not b.dynamic or bool(set(b.state.blockedDOFs) & {"x", "y"})) for b in bodies],
         }, {})
 
     def _bonds(self, pos: np.ndarray):

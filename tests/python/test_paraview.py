@@ -58,7 +58,7 @@ def test_series_of_discs_bonds_and_joints(empty_scene, tmp_path):
     assert discs.GetNumberOfPoints() == 6
     assert field(discs, "radius") == pytest.approx([R] * 6)
     assert field(discs, "displacement")[1][1] > 0 and field(discs, "velocity")[1][1] == pytest.approx(0.01)
-    assert list(field(discs, "fixed")) == [1, 0, 1, 1, 1, 1]
+    assert list(field(discs, "fixed")) == [1, 1, 1, 1, 1, 1]  # disc 1 is driven
     assert len(field(discs, "block")) == 6
     bonds = read(paths[1])
     assert bonds.GetNumberOfCells() == 2
@@ -73,6 +73,17 @@ def test_series_of_discs_bonds_and_joints(empty_scene, tmp_path):
         entries = ET.parse(tmp_path / f"{kind}.pvd").getroot().find("Collection")
         assert [e.get("file") for e in entries] == [f"{kind}_00000.vtu", f"{kind}_00001.vtu"]
         assert float(entries[1].get("timestep")) == pytest.approx(O.time)
+
+
+def test_fixed_flag_marks_discs_held_or_driven_by_a_boundary_condition(empty_scene, tmp_path):
+    """Free, held by boundary.fix (the table's layer), driven by boundary.move, non-dynamic."""
+    rock = material()
+    O.bodies.append([scene.disc((4 * k * R, 0), R, rock, fixed=k == 3) for k in range(4)])
+    boundary.fix([1], "xy")
+    boundary.move([2], (0, 1e-3), "y")
+    O.engines = scene.engines(gravity=(0, 0, 0))
+    discs = read(paraview.ParaViewSeries(str(tmp_path)).snapshot()[0])
+    assert list(field(discs, "fixed")) == [0, 1, 1, 1]
 
 
 def test_resumed_series_continues_numbering_and_displacements(empty_scene, tmp_path):
@@ -107,6 +118,29 @@ def test_bond_stress_history_reads_the_series_back(empty_scene, tmp_path, capsys
     assert sigma > 0 and [c.strip() for c in row[2:5]] == ["26", "1", "0 / 0"]
     assert float(row[5]) == pytest.approx(sigma / 1e3, abs=0.05)
     assert [c.strip() for c in row[7:9]] == ["1", "0"]  # bonds above half and twice its stress
+
+
+def test_crack_heights_tells_roots_from_bonds_above_the_table(empty_scene, tmp_path, capsys):
+    """scripts/crack_heights.py: a bond to a disc within Rmax of the table is a root, one between
+    discs 30 mm up is in 20-50 mm. The root is pulled until it breaks: one new crack, at the root."""
+    heights = load_script("crack_heights")
+    rock = material(bondTensileStrength=1e4)
+    low, high = 0.03 - R, 0.03 + R  # the upper pair's bond midpoint is 30 mm above the table
+    O.bodies.append([scene.disc((0, 0), R, rock), scene.disc((0, 2 * R), R, rock),
+                     scene.disc((4 * R, low), R, rock), scene.disc((4 * R, high), R, rock)])
+    boundary.fix([0], "xy")  # held as the table's layer is
+    O.engines = scene.engines(gravity=(0, 0, 0))
+    bonding.bond_within_gap(1e-9)
+    series = paraview.ParaViewSeries(str(tmp_path / "paraview"))
+    series.snapshot()
+    pull_until_broken(1)
+    series.snapshot()
+    summary = {"stages": [{"time": O.time, "tilt": 30.0}], "inputs": {"rmax": R}}
+    (tmp_path / "summary.json").write_text(json.dumps(summary))
+    heights.main(str(tmp_path), top=2)
+    rows = [[c.strip() for c in line.split("|")[1:-1]] for line in capsys.readouterr().out.splitlines()[3:]]
+    assert rows[0][1:] == ["0", "[0, 0, 0, 0, 0]", "[1, 0, 1, 0, 0]"]
+    assert rows[1][1:] == ["1", "[1, 0, 0, 0, 0]", "[0, 0, 1, 0, 0]"]  # only the upper bond is left
 
 
 def test_list_breaks_reads_a_saved_scene(empty_scene, tmp_path, capsys):
