@@ -35,11 +35,21 @@ class StageCriteria:
     rest_speed: float = 1e-3  # [m/s] fastest watched disc slower than this: equilibrium
     fail_displacement: float = 5e-3  # [m] a watched disc moved more since the last equilibrium: failed
     max_stage_time: float = 0.4  # [s] still moving faster than rest_speed after this: failed (creep)
+    # how many watched groups must pass fail_displacement for the stage to fail; fewer are gone
+    # (a toe column toppled off the table on its own) and no longer judged for rest
+    fail_columns: int = 1
 
     def __post_init__(self):
-        for name in ("chunk", "rest_speed", "fail_displacement", "max_stage_time"):
+        for name in ("chunk", "rest_speed", "fail_displacement", "max_stage_time", "fail_columns"):
             if getattr(self, name) <= 0:
                 raise ValueError(f"{name} = {getattr(self, name)} is invalid: it must be > 0")
+        if self.fail_columns != int(self.fail_columns):
+            raise ValueError(f"fail_columns = {self.fail_columns} is invalid: it must be a whole number >= 1")
+
+
+def gone(now: np.ndarray, reference: np.ndarray, criteria: StageCriteria) -> np.ndarray:
+    """Which watched groups (centroids ``now``) moved more than fail_displacement from ``reference``."""
+    return np.linalg.norm(now - reference, axis=1) > criteria.fail_displacement
 
 
 def ramp(from_deg: float, to_deg: float, duration: float, on_chunk: Optional[Callable[[], None]] = None,
@@ -81,20 +91,25 @@ def run_stage(alpha_deg: float, watched: Sequence[Sequence[int]], reference: np.
               on_chunk: Optional[Callable[[], None]] = None, start: Optional[float] = None) -> str:
     """Tilt to ``alpha_deg`` and run until ``'equilibrium'`` or ``'failed'`` (see
     StageCriteria), judged on the centroids of the ``watched`` groups of discs (one loose disc
-    rattling must not count as a column moving) against their ``reference`` positions.
+    rattling must not count as a column moving) against their ``reference`` positions:
+    failed when ``fail_columns`` groups have moved more than ``fail_displacement``, or when the
+    others still move faster than ``rest_speed`` after ``max_stage_time``.
     ``start``: the simulated time the stage began (now by default; a resumed run passes the
     checkpointed one, so max_stage_time counts the whole stage)."""
+    if criteria.fail_columns > len(watched):
+        raise ValueError(f"fail_columns = {criteria.fail_columns} is invalid: it must be at most the number of "
+                         f"watched groups ({len(watched)})")
     set_tilt(alpha_deg)
     start, before = O.time if start is None else start, centroids(watched)
     while True:
         scene.run_checked(criteria.chunk, f"the stage at {alpha_deg} deg")
         now = centroids(watched)
-        speed = np.linalg.norm(now - before, axis=1).max() / criteria.chunk
-        moved = farthest_move(now, reference)
+        off = gone(now, reference, criteria)
+        speed = np.linalg.norm(now - before, axis=1)[~off].max(initial=0.0) / criteria.chunk
         before = now
         if on_chunk:
             on_chunk()
-        if moved > criteria.fail_displacement:
+        if off.sum() >= criteria.fail_columns:
             return "failed"
         if speed < criteria.rest_speed:
             return "equilibrium"

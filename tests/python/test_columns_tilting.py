@@ -51,6 +51,20 @@ def test_stage_ends_in_equilibrium_below_and_fails_above_the_joint_friction(empt
     assert tilting.run_stage(tilt, watched, tilting.centroids(watched), criteria) == expected
 
 
+@pytest.mark.parametrize("fail_columns, expected", [(1, "failed"), (2, "equilibrium")])
+def test_a_lone_group_gone_fails_the_stage_only_if_fail_columns_is_one(empty_scene, fail_columns, expected):
+    """The block slides off at 27 deg and the base stays put: with fail_columns 2 the block is
+    gone and the base, at rest, decides."""
+    setup = incline.build(0.1, 0.05, 0.012 / 2.5, 0.012, ROCK, math.degrees(math.atan(0.4)))  # 21.8 deg
+    O.engines[-1].damping = 0.5
+    watched = [setup.block, setup.base]
+    criteria = tilting.StageCriteria(chunk=0.02, rest_speed=1e-3, fail_displacement=2e-3, max_stage_time=0.3,
+                                     fail_columns=fail_columns)
+    reference = tilting.centroids(watched)
+    assert tilting.run_stage(27.0, watched, reference, criteria) == expected
+    assert list(tilting.gone(tilting.centroids(watched), reference, criteria)) == [True, False]
+
+
 def _along_slope_response(load) -> tuple[float, float]:
     """(peak, static) displacement along the table of a block on a joint under ``load``."""
     setup = incline.build(0.1, 0.05, 0.012 / 2.5, 0.012, ROCK, math.degrees(math.atan(0.4)))
@@ -151,6 +165,10 @@ def test_missing_checkpoint_says_what_to_do(tmp_path):
 def test_bad_stage_criteria_are_refused():
     with pytest.raises(ValueError, match="rest_speed"):
         tilting.StageCriteria(rest_speed=0)
+    with pytest.raises(ValueError, match="fail_columns"):
+        tilting.StageCriteria(fail_columns=1.5)
+    with pytest.raises(ValueError, match=r"number of watched groups \(1\)"):
+        tilting.run_stage(10.0, [[0]], tilting.np.zeros((1, 2)), tilting.StageCriteria(fail_columns=2))
     with pytest.raises(ValueError, match="duration"):
         tilting.ramp(0.0, 10.0, 0.0)
 
