@@ -27,22 +27,35 @@ def snapshots(folder: str) -> list[tuple[float, str]]:
     return [(float(d.get("timestep")), os.path.join(series, d.get("file"))) for d in root.iter("DataSet")]
 
 
-def stage_tilts(folder: str) -> list[tuple[float, float]]:
-    """(end time, tilt) of the run's stages, from its summary or, while it runs, its checkpoint."""
+def run_record(folder: str) -> dict:
+    """The run's summary.json or, while it runs, its checkpoint.json ({} if neither)."""
     for name in ("summary.json", "checkpoint.json"):
         path = os.path.join(folder, name)
         if os.path.exists(path):
             with open(path) as f:
-                return [(s["time"], s["tilt"]) for s in json.load(f)["stages"]]
-    return []
+                return json.load(f)
+    return {}
 
 
-def bond_arrays(path: str) -> dict[str, np.ndarray]:
+def stage_tilts(folder: str) -> list[tuple[float, float]]:
+    """(end time, tilt) of the run's stages."""
+    return [(s["time"], s["tilt"]) for s in run_record(folder).get("stages", [])]
+
+
+def read_grid(path: str):
     reader = vtkXMLUnstructuredGridReader()
     reader.SetFileName(path)
     reader.Update()
-    cells = reader.GetOutput().GetCellData()
+    return reader.GetOutput()
+
+
+def cell_arrays(grid) -> dict[str, np.ndarray]:
+    cells = grid.GetCellData()
     return {cells.GetArrayName(i): vtk_to_numpy(cells.GetArray(i)) for i in range(cells.GetNumberOfArrays())}
+
+
+def bond_arrays(path: str) -> dict[str, np.ndarray]:
+    return cell_arrays(read_grid(path))
 
 
 def main(folder: str, above: Sequence[float] = ()) -> None:

@@ -5,41 +5,29 @@
 For each snapshot of the bonds series (one per stage end) prints the stage's tilt, the bonds
 broken since the previous snapshot, and how many of them, and of the ``top`` (20) most
 stressed intact bonds, are roots (bonds to a disc of the table's fixed layer, centred within
-Rmax of the table as the example fixes them: where the columns are tied to the table) or lie in each band of height above the table (y = 0) (the ideal model's
-design plane rises from the toe to 80 mm at the seventh column). A slope that topples along
-a surface through the columns cracks above the roots; one that breaks off the table cracks
-at them.
+Rmax of the table as the example fixes them: where the columns are tied to the table) or lie
+in each band of height above the table (y = 0); the ideal model's design plane rises from the
+toe to 80 mm at the seventh column. A slope that topples along a surface through the columns
+cracks above the roots; one that breaks off the table cracks at them.
 """
-import json
 import os
 import sys
 
 import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from bond_stress_history import snapshots, stage_tilts  # noqa: E402
+from bond_stress_history import cell_arrays, read_grid, run_record, snapshots, stage_tilts  # noqa: E402
 
 BANDS_MM = (0.0, 20.0, 50.0, 100.0, np.inf)  # heights above the table of the bonds not at a root
 
 
-def read(path: str):
-    reader = vtkXMLUnstructuredGridReader()
-    reader.SetFileName(path)
-    reader.Update()
-    return reader.GetOutput()
-
-
 def bonds_of_snapshot(path: str, rmax: float) -> tuple[np.ndarray, np.ndarray, dict[str, np.ndarray]]:
     """Midpoint heights y and root flags of the bonds of one bonds .vtu, and its cell arrays."""
-    grid = read(path)
+    grid = read_grid(path)
     y = vtk_to_numpy(grid.GetPoints().GetData())[:, 1]
-    fixed = y <= rmax
     ends = vtk_to_numpy(grid.GetCells().GetConnectivityArray()).reshape(-1, 2)
-    cells = grid.GetCellData()
-    arrays = {cells.GetArrayName(i): vtk_to_numpy(cells.GetArray(i)) for i in range(cells.GetNumberOfArrays())}
-    return 0.5 * (y[ends[:, 0]] + y[ends[:, 1]]), fixed[ends].any(axis=1), arrays
+    return 0.5 * (y[ends[:, 0]] + y[ends[:, 1]]), (y <= rmax)[ends].any(axis=1), cell_arrays(grid)
 
 
 def band_counts(heights: np.ndarray, root: np.ndarray) -> list[int]:
@@ -48,9 +36,7 @@ def band_counts(heights: np.ndarray, root: np.ndarray) -> list[int]:
 
 
 def main(folder: str, top: int = 20) -> None:
-    with open(os.path.join(folder, "summary.json" if os.path.exists(os.path.join(folder, "summary.json"))
-                           else "checkpoint.json")) as f:
-        rmax = json.load(f)["inputs"]["rmax"]
+    rmax = run_record(folder)["inputs"]["rmax"]
     stages = stage_tilts(folder)
     names = [f"{lo:g}–{hi:g}" if np.isfinite(hi) else f"≥ {lo:g}" for lo, hi in zip(BANDS_MM, BANDS_MM[1:])]
     print("Bonds by place: roots, then heights above the table (mm) " + ", ".join(names))
