@@ -250,18 +250,19 @@ def column_members(layout: columns.ColumnLayout) -> dict[int, list]:
     return members
 
 
-def column_top_bands(members: dict[int, list], depth: float) -> list[list[int]]:
-    """The rock discs (>= 2 intact bonds) within ``depth`` of each column's top: their centroid
-    is what the stage criteria watch (a loose disc rolling off is not the column moving). A
-    column too small for the discs to bond (the toe column at R 2-8 mm) is not watched."""
-    bands = []
+def column_top_bands(members: dict[int, list], depth: float) -> dict[str, list[int]]:
+    """The rock discs (>= 2 intact bonds) within ``depth`` of each column's top, by column
+    label: their centroid is what the stage criteria watch (a loose disc rolling off is not the
+    column moving). A column too small for the discs to bond (the toe column at R 2-8 mm) is not
+    watched."""
+    bands = {}
     for k, discs in members.items():
         rock = bonding.rock([b.id for b in discs])
         if not rock:
             print(f"column {analysis.column_label(k)}: no bonded discs (rmax = {table.rmax} m), not watched")
             continue
         top = max(O.bodies[i].state.pos[1] for i in rock)
-        bands.append([i for i in rock if O.bodies[i].state.pos[1] > top - depth])
+        bands[analysis.column_label(k)] = [i for i in rock if O.bodies[i].state.pos[1] > top - depth]
     return bands
 
 
@@ -284,10 +285,15 @@ else:
     members = column_members(layout)
     ids = [b.id for b in O.bodies if b is not None]
     points = monitor.column_top_points(layout, bonding.rock(ids))  # a loose top disc may drop off the table
-    state = {"inputs": inputs, "layout": vars(layout), "ids": ids, "watched": column_top_bands(members, 2 * table.rmax),
+    bands = column_top_bands(members, 2 * table.rmax)
+    state = {"inputs": inputs, "layout": vars(layout), "ids": ids, "watched": list(bands.values()),
+             "watched_columns": list(bands),
              "tilt": table.start_tilt, "failure_tilt": None,
              "reference": tilting.positions(ids).tolist(), "stages": [], "energy": []}
 ids, watched = state["ids"], state["watched"]
+# older checkpoints lack the labels: the column each watched group stands in when resumed
+watched_columns = state.get("watched_columns") or [analysis.column_label(layout.column_of(x)) if layout.column_of(x)
+                                                   else "?" for x, _ in tilting.centroids(watched)]
 series = paraview.ParaViewSeries(f"{table.out}/paraview", joints.rock_functor().joints.blockOfBody, state.get("series"))
 progress = monitor.Progress()
 earlier_wall_time = state.get("wall_time", 0.0)  # of the runs this one resumes
@@ -331,11 +337,6 @@ def begin(name: str, start: Optional[float] = None, **extra) -> dict:
     return state["phase"]
 
 
-def column_name(x: float) -> str:
-    k = layout.column_of(x)
-    return analysis.column_label(k) if k else "a column already off the table"
-
-
 def run_stage(alpha: float, phase: dict) -> str:
     return tilting.run_stage(alpha, watched, np.array(phase["reference"]), criteria, on_chunk, start=phase["start"])
 
@@ -356,7 +357,7 @@ while state["failure_tilt"] is None and state["tilt"] <= table.max_tilt + 1e-9:
     moved = tilting.farthest_move(now, reference)
     stage = {"tilt": state["tilt"], "outcome": outcome, "time": O.time, "steps": O.iter,
              "moved_mm": 1e3 * float(moved),  # a local collapse that came to rest shows here
-             "gone": [column_name(x) for (x, _), off in zip(reference, tilting.gone(now, reference, criteria)) if off]}
+             "gone": [c for c, off in zip(watched_columns, tilting.gone(now, reference, criteria)) if off]}
     if outcome == "equilibrium" and stage["gone"]:
         print(f"tilt {state['tilt']:.1f} deg: {', '.join(stage['gone'])} toppled off on its own "
               f"(fewer than fail_columns = {table.fail_columns})", flush=True)
