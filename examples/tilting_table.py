@@ -76,7 +76,8 @@ per stage. Each stage runs in chunks of `chunk` seconds with local damping `damp
   than `fail_displacement` (one column width: toppled off their neighbours, no need to wait).
   With `fail_columns` 2 a column that topples off alone (at R 1-4 mm the toe column A-1, 2.7 cm
   high, once its root has cracked: the rest of the slope came to rest behind it, and the analysis
-  finds no surface) is gone: the stage log and its `gone` key name it, and the others decide. A
+  finds no surface) is gone: the stage's log line and `gone` key name it, and the others decide
+  (`moved_mm` is then theirs). A
   local collapse that comes to rest is not failure: measured at R 2-8 mm and 159 kPa, the toe
   columns of the ideal model moved more than 5 mm at 36 deg, breaking 8 bonds, and were at
   rest 0.76 s into the stage; with a 5 mm threshold (before) that stage counted as the
@@ -354,18 +355,18 @@ if phase["name"] == "ramp":
 while state["failure_tilt"] is None and state["tilt"] <= table.max_tilt + 1e-9:
     outcome = run_stage(state["tilt"], phase)
     now, reference = tilting.centroids(watched), np.array(phase["reference"])
-    moved = tilting.farthest_move(now, reference)
+    off = tilting.gone(now, reference, criteria)
+    judged = ~off if outcome == "equilibrium" else np.ones_like(off)  # a column gone off the table does not count
+    moved = float(np.linalg.norm(now - reference, axis=1)[judged].max(initial=0.0))
     stage = {"tilt": state["tilt"], "outcome": outcome, "time": O.time, "steps": O.iter,
-             "moved_mm": 1e3 * float(moved),  # a local collapse that came to rest shows here
-             "gone": [c for c, off in zip(watched_columns, tilting.gone(now, reference, criteria)) if off]}
-    if outcome == "equilibrium" and stage["gone"]:
-        print(f"tilt {state['tilt']:.1f} deg: {', '.join(stage['gone'])} toppled off on its own "
-              f"(fewer than fail_columns = {table.fail_columns})", flush=True)
+             "moved_mm": 1e3 * moved,  # a local collapse that came to rest shows here
+             "gone": [c for c, gone in zip(watched_columns, off) if gone]}
     if outcome == "failed":  # a collapse or a creep: whoever weighs the failure tilt needs to know which
-        stage["failed_by"] = "fail_displacement" if moved > criteria.fail_displacement else "max_stage_time"
+        stage["failed_by"] = "fail_displacement" if off.sum() >= criteria.fail_columns else "max_stage_time"
     state["stages"].append(stage)
     how = f" by {stage['failed_by']}" if "failed_by" in stage else ""
-    print(f"tilt {state['tilt']:.1f} deg: {outcome}{how} (a column top moved {1e3 * moved:.1f} mm)", flush=True)
+    alone = f"; {', '.join(stage['gone'])} toppled off alone" if outcome == "equilibrium" and stage["gone"] else ""
+    print(f"tilt {state['tilt']:.1f} deg: {outcome}{how} (a column top moved {1e3 * moved:.1f} mm{alone})", flush=True)
     series.snapshot()
     if outcome == "failed":
         state["failure_tilt"] = state["tilt"]

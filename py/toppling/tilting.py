@@ -82,11 +82,6 @@ def centroids(groups: Sequence[Sequence[int]]) -> np.ndarray:
     return np.array([positions(group).mean(axis=0) for group in groups])
 
 
-def farthest_move(now: np.ndarray, reference: np.ndarray) -> float:
-    """The largest distance between points ``now`` and their ``reference`` positions."""
-    return float(np.linalg.norm(now - reference, axis=1).max())
-
-
 def run_stage(alpha_deg: float, watched: Sequence[Sequence[int]], reference: np.ndarray, criteria: StageCriteria,
               on_chunk: Optional[Callable[[], None]] = None, start: Optional[float] = None) -> str:
     """Tilt to ``alpha_deg`` and run until ``'equilibrium'`` or ``'failed'`` (see
