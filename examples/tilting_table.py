@@ -77,11 +77,10 @@ per stage. Each stage runs in chunks of `chunk` seconds with local damping `damp
   With `fail_columns` 2 a column that topples off alone (at R 1-4 mm the toe column A-1, 2.7 cm
   high, once its root has cracked: the rest of the slope came to rest behind it, and the analysis
   finds no surface) is gone: the stage's log line and `gone` key name it, and the others decide
-  (`moved_mm` is then theirs). A
-  local collapse that comes to rest is not failure: measured at R 2-8 mm and 159 kPa, the toe
-  columns of the ideal model moved more than 5 mm at 36 deg, breaking 8 bonds, and were at
-  rest 0.76 s into the stage; with a 5 mm threshold (before) that stage counted as the
-  failure.
+  (`moved_mm` is then theirs). A local collapse that comes to rest is not failure: measured at
+  R 2-8 mm and 159 kPa, the toe columns of the ideal model moved more than 5 mm at 36 deg,
+  breaking 8 bonds, and were at rest 0.76 s into the stage; with a 5 mm threshold (before) that
+  stage counted as the failure.
 
 Time step: GlobalStiffnessTimeStepper's, dt = sqrt(2) `timestep_safety` min sqrt(m/K) over the
 discs (K: the stiffness of their bonds, contacts and joints), updated every 100 steps; Table 5-3's
@@ -139,9 +138,10 @@ from toppling import (analysis, bonding, boundary, columns, geometry, joints, mo
 
 readParamsFromTable(arrangement="ideal", rmin=1e-3, rmax=4e-3, porosity=0.18, seed=1, start_tilt=20.0, step=1.0,
                     max_tilt=45.0, tilt_rate=50.0, damping=0.7, chunk=0.02, rest_speed=1e-3, fail_displacement=0.05,
-                    max_stage_time=2.0, fail_columns=1, post_failure_time=0.3, timestep_safety=0.5, bond_tensile_strength=0.0,
-                    main_joint_friction=0.0, base_joint_friction=0.0, shrink_overlaps=1, joint_stiffness_scale=1.0,
-                    resume=-1, checkpoint_every=600.0, out="results/tilting_table", noTableOk=True)
+                    max_stage_time=2.0, fail_columns=1, post_failure_time=0.3, timestep_safety=0.5,
+                    bond_tensile_strength=0.0, main_joint_friction=0.0, base_joint_friction=0.0, shrink_overlaps=1,
+                    joint_stiffness_scale=1.0, resume=-1, checkpoint_every=600.0, out="results/tilting_table",
+                    noTableOk=True)
 from yade.params import table  # noqa: E402  (filled by readParamsFromTable)
 
 WIDTH, BLOCK_LENGTH, T, COLUMNS = 0.05, 0.10, 0.047, 15
