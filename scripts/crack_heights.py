@@ -49,7 +49,8 @@ def main(folder: str, top: int = 20) -> None:
         new = np.flatnonzero(bonds["state"] > 1)[broken_before:]  # the series lists breaks in their order
         intact = np.flatnonzero(bonds["state"] == 1)
         peaks = intact[np.argsort(bonds["sigma_max"][intact])[::-1][:top]]
-        print(f"| {tilt} | {len(new)} | {band_counts(height[new], root[new])} | {band_counts(height[peaks], root[peaks])} |")
+        cracks, stressed = band_counts(height[new], root[new]), band_counts(height[peaks], root[peaks])
+        print(f"| {tilt} | {len(new)} | {cracks} | {stressed} |")
         broken_before += len(new)
 
 
