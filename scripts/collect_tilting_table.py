@@ -16,7 +16,7 @@ from typing import Optional
 
 CALIBRATION = ("bond_tensile_strength", "main_joint_friction", "base_joint_friction")  # 0: the thesis' tables
 NUMERICS = {"timestep_safety": 0.5, "seed": 1, "joint_stiffness_scale": 1.0}  # defaults (older summaries lack keys)
-ADDED = {"shrink_overlaps": 0, "fail_columns": 1}  # inputs newer than some summaries: the value those runs had
+ADDED = {"shrink_overlaps": 0, "fail_columns": 1, "bond_gap": 0.0}  # inputs newer than some summaries: the value those runs had
 RUN_ONLY = ("out", "resume", "checkpoint_every", "max_tilt", "post_failure_time")  # no part of the model
 SIZE_TOLERANCE_DEG = 2.0
 
