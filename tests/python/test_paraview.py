@@ -143,6 +143,18 @@ def test_crack_heights_tells_roots_from_bonds_above_the_table(empty_scene, tmp_p
     assert rows[1][1:] == ["1", "[1, 0, 0, 0, 0]", "[0, 0, 1, 0, 0]"]  # only the upper bond is left
 
 
+def test_bond_coordination_counts_neighbours_within_each_gap(empty_scene, tmp_path, capsys):
+    """scripts/bond_coordination.py on three discs in a row, 0.5 and 1.5 radii apart at their
+    surfaces: no pair within a quarter radius, one within one radius, both within two."""
+    coordination = load_script("bond_coordination")
+    O.bodies.append([scene.disc((x, 0), R, material()) for x in (0, 2.5 * R, 6 * R)])
+    O.engines = scene.engines(gravity=(0, 0, 0))
+    paraview.ParaViewSeries(str(tmp_path / "paraview")).snapshot()
+    coordination.main(str(tmp_path), [1e3 * g for g in (0.25 * R, R, 2 * R)])
+    row = capsys.readouterr().out.splitlines()[-1]
+    assert [float(c) for c in row.split("|")[2:-1]] == pytest.approx([0, 2 / 3, 4 / 3], abs=0.01)
+
+
 def test_list_breaks_reads_a_saved_scene(empty_scene, tmp_path, capsys):
     """scripts/list_breaks.py: one row per break with its time, place, mode and the bonds left."""
     breaks = load_script("list_breaks")
