@@ -3,7 +3,8 @@
     ./yade -x -n scripts/packing_overlaps.py results/tilting_table/<run> [...]
 
 Reads each run's checkpoint: the discs' radii from the scene, their positions as bonded from
-``reference`` in checkpoint.json. Prints the number of overlapping pairs, their mean, 99th
+the ParaView series' ``reference`` in checkpoint.json (the run's own ``reference`` moves to each
+equilibrium). Prints the number of overlapping pairs, their mean, 99th
 percentile and largest overlap (with the pair's ids), and the discs' total area: what
 ``shrink_overlaps`` removes and what it costs.
 """
@@ -22,8 +23,9 @@ def bonded_discs(out: str) -> tuple[list[int], list[tuple[float, float]], list[f
     O.load(f"{out}/checkpoint.yade.bz2")
     with open(f"{out}/checkpoint.json") as f:
         state = json.load(f)
-    centres = [(x, y) for x, y, *_ in state["reference"]]
-    return state["ids"], centres, [O.bodies[i].shape.radius for i in state["ids"]]
+    series = state["series"]  # started right after bonding, before the first step
+    centres = [(x, y) for x, y, *_ in series["reference"]]
+    return series["ids"], centres, [O.bodies[i].shape.radius for i in series["ids"]]
 
 
 def report(out: str) -> str:

@@ -173,13 +173,15 @@ def test_list_breaks_reads_a_saved_scene(empty_scene, tmp_path, capsys):
 
 
 def test_packing_overlaps_reports_the_discs_as_bonded(empty_scene, tmp_path):
-    """scripts/packing_overlaps.py: overlaps from the checkpoint's reference positions, not the
-    discs' current ones."""
+    """scripts/packing_overlaps.py: overlaps from the ParaView series' reference positions (as
+    bonded), not the discs' current ones nor the last equilibrium's."""
     overlaps = load_script("packing_overlaps")
     ids = scene.add_discs([(0, 0, R), (2 * R, 0, R), (4 * R, 0, R)], material())
     reference = [(0, 0, 0), (1.98 * R, 0, 0), (4 * R, 0, 0)]  # as bonded: the first pair overlapped by 0.02 R
     O.save(str(tmp_path / "checkpoint.yade.bz2"))
-    (tmp_path / "checkpoint.json").write_text(json.dumps({"ids": ids, "reference": reference}))
+    equilibrium = [(0, 0, 0), (2 * R, 0, 0), (4 * R, 0, 0)]
+    (tmp_path / "checkpoint.json").write_text(json.dumps(
+        {"ids": ids, "reference": equilibrium, "series": {"ids": ids, "reference": reference}}))
     line = overlaps.report(str(tmp_path))
     assert "3 discs, 1 overlapping pairs" in line and f"largest {0.02 * R:.2g} m (discs {ids[0]} and {ids[1]})" in line
     assert f"disc area {3 * math.pi * R * R:.6f} m2" in line
