@@ -129,7 +129,7 @@ import math
 from typing import Optional
 
 import numpy as np
-from yade import O, utils
+from yade import O
 from yade.utils import readParamsFromTable
 from yade.wrapper import ParallelBondMat, SmoothJointMat
 
@@ -298,7 +298,15 @@ ids, watched = state["ids"], state["watched"]
 watched_columns = state.get("watched_columns") or [analysis.column_label(layout.column_of(x)) if layout.column_of(x)
                                                    else "?" for x, _ in tilting.centroids(watched)]
 series = paraview.ParaViewSeries(f"{table.out}/paraview", joints.rock_functor().joints.blockOfBody, state.get("series"))
-progress = monitor.Progress()
+OFF_TABLE = -2 * table.rmax  # a disc whose centre fell below this height has left the table
+
+
+def slope_energy() -> float:
+    """The kinetic energy of the discs still on the table: a column fallen off it is no longer the slope's."""
+    return tilting.kinetic_energy_above(ids, OFF_TABLE)
+
+
+progress = monitor.Progress(energy=slope_energy)
 earlier_wall_time = state.get("wall_time", 0.0)  # of the runs this one resumes
 last_save = progress.wall_time
 
@@ -320,7 +328,7 @@ KNOWN_LENGTH = {"ramp": (f"ramp to {table.start_tilt:g} deg", table.start_tilt /
 
 def on_chunk() -> None:
     points.record()
-    state["energy"].append((O.time, tilting.current_tilt(), utils.kineticEnergy()))  # the ramp shows as one
+    state["energy"].append((O.time, tilting.current_tilt(), slope_energy()))  # the ramp shows as one
     phase = state["phase"]
     if phase["name"] in KNOWN_LENGTH:
         label, length = KNOWN_LENGTH[phase["name"]]
@@ -416,7 +424,7 @@ def analyse() -> dict:
     cracks = analysis.slope_frame(np.array([tuple(p)[:2] for p in law.breakPosition]).reshape(-1, 2), toe, 90)
     # a disc that had dropped off the table before the last equilibrium (a loose toe disc at
     # coarse resolution) is out of the model: its fall is no column's motion
-    on_table = reference[:, 1] > -2 * table.rmax
+    on_table = reference[:, 1] > OFF_TABLE
     column = np.array([layout.column_of(x) for x in reference[:, 0]])
     column[~on_table] = 0
     index = {i: n for n, i in enumerate(ids)}

@@ -4,7 +4,7 @@ from __future__ import annotations
 import json
 import os
 import time
-from typing import Any, Optional, Sequence
+from typing import Any, Callable, Optional, Sequence
 
 from yade import O, utils
 
@@ -15,10 +15,11 @@ class Progress:
     """Prints ``label, step, simulated time, kinetic energy, broken bonds, ETA`` at most every
     ``every`` wall seconds. ETA from the fraction of the work done that the caller passes, or
     from the simulated time still to run at the simulated-time rate since the last line (a phase
-    of known length, such as a post-failure run)."""
+    of known length, such as a post-failure run). ``energy`` gives the kinetic energy to print
+    (by default the whole scene's)."""
 
-    def __init__(self, every: float = 10.0):
-        self.every = every
+    def __init__(self, every: float = 10.0, energy: Callable[[], float] = utils.kineticEnergy):
+        self.every, self.energy = every, energy
         self.start = time.time()
         self.last = -float("inf")
         self.last_sim_time = None
@@ -36,7 +37,7 @@ class Progress:
             eta = f"{elapsed * (1 - fraction_done) / fraction_done:.0f} s"
         self.last, self.last_sim_time = now, O.time
         print(f"[{elapsed:7.0f} s] {label}  step {O.iter}  t = {O.time:.4f} s  "
-              f"Ek = {utils.kineticEnergy():.3e} J  broken bonds {len(scene.bond_law().breakMode)}  ETA {eta}",
+              f"Ek = {self.energy():.3e} J  broken bonds {len(scene.bond_law().breakMode)}  ETA {eta}",
               flush=True)
 
     @property

@@ -29,6 +29,18 @@ def positions(ids: Sequence[int]) -> np.ndarray:
     return np.array([tuple(O.bodies[i].state.pos)[:2] for i in ids])
 
 
+def kinetic_energy_above(ids: Sequence[int], floor: float) -> float:
+    """Kinetic energy [J] (translation and rotation) of the discs ``ids`` whose centre is above
+    height ``floor``. A column that toppled off the table's edge falls on into the void, and its
+    energy, growing with the square of time, would soon hide the slope's own."""
+    total = 0.0
+    for i in ids:
+        s = O.bodies[i].state
+        if s.pos[1] > floor:
+            total += 0.5 * s.mass * s.vel.squaredNorm() + 0.5 * sum(s.inertia[k] * s.angVel[k] ** 2 for k in range(3))
+    return total
+
+
 @dataclass
 class StageCriteria:
     chunk: float = 0.02  # simulated seconds between checks

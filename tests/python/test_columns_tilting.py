@@ -4,6 +4,7 @@ import math
 
 import pytest
 from yade import O, utils
+from yade.wrapper import ParallelBondMat
 
 from toppling import columns, incline, monitor, scene, tilting
 
@@ -178,13 +179,14 @@ def test_progress_eta_of_a_phase_of_known_length_is_its_remaining_time_at_the_cu
     O.engines = scene.engines(timestepper=False)
     wall = iter([100.0, 100.0, 110.0])  # Progress() at 100 s, lines at 100 s and 110 s
     monkeypatch.setattr(monitor.time, "time", lambda: next(wall))
-    progress = monitor.Progress(every=5.0)
+    progress = monitor.Progress(every=5.0, energy=lambda: 1.25e-3)
     progress("post", remaining_time=0.3)  # no rate yet
     O.dt = 0.01
     O.run(2, True)  # 0.02 simulated s in 10 wall s: 0.1 s more take 50 s
     progress("post", remaining_time=0.1)
     lines = capsys.readouterr().out.splitlines()
     assert lines[0].endswith("ETA ?") and lines[1].endswith("ETA 50 s")
+    assert "Ek = 1.250e-03 J" in lines[0]  # the energy it was given
 
 
 def test_rate_since_is_the_change_of_total_displacement_per_second():
@@ -194,3 +196,15 @@ def test_rate_since_is_the_change_of_total_displacement_per_second():
                                                  "y": {"A-1": [0.0, 0.04, 0.04, 0.12]}})
     assert points.rate_since("A-1", 1.1) == pytest.approx(0.05)  # 0.05 m to 0.15 m over 1 s to 3 s
     assert points.rate_since("A-1", 3.0) == 0.0
+
+
+def test_kinetic_energy_above_the_floor_leaves_out_a_disc_fallen_below_it(empty_scene):
+    """Closed form: 1/2 m v^2 + 1/2 I w^2 of the discs above the floor, the scene's total when
+    none is below it; the progress line prints that energy."""
+    up, down = scene.add_discs([(0, 0.1, 0.01), (0, -0.1, 0.01)], ParallelBondMat(**ROCK))
+    for i, (v, w) in zip((up, down), ((0.3, 2.0), (5.0, 0.0))):
+        O.bodies[i].state.vel, O.bodies[i].state.angVel = (v, 0, 0), (0, 0, w)
+    s = O.bodies[up].state
+    expected = 0.5 * s.mass * 0.3 ** 2 + 0.5 * s.inertia[2] * 2.0 ** 2
+    assert tilting.kinetic_energy_above([up, down], floor=0.0) == pytest.approx(expected, rel=1e-12)
+    assert tilting.kinetic_energy_above([up, down], floor=-1.0) == pytest.approx(utils.kineticEnergy(), rel=1e-12)
