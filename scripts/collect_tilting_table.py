@@ -4,8 +4,9 @@
 
 Prints a Markdown table (pasted into README.md) from every ``<folder>/*/summary.json``, then
 the particle-size check (issue 4: failure tilt and phi within 2 deg of the coarser packing of
-the same model): runs that differ only in rmin/rmax, each compared with the next coarser one;
-and the spread of failure tilt and phi over packings that differ only in their seed.
+the same model): runs that differ only in rmin/rmax, each compared with the next coarser one of
+the same bond gap and with the next coarser one of the same bond density (a gap in proportion to
+the mean radius); a run that stood to its last stage counts as failing above it; and the spread of failure tilt and phi over packings that differ only in their seed.
 """
 import glob
 import json
@@ -19,6 +20,7 @@ NUMERICS = {"timestep_safety": 0.5, "seed": 1, "joint_stiffness_scale": 1.0}  # 
 ADDED = {"shrink_overlaps": 0, "fail_columns": 1, "bond_gap": 0.0}  # inputs newer than some summaries: the value those runs had
 RUN_ONLY = ("out", "resume", "checkpoint_every", "max_tilt", "post_failure_time")  # no part of the model
 SIZE_TOLERANCE_DEG = 2.0
+TABLE_BOND_GAP = 1.05e-3  # [m] Table 5-2: what bond_gap 0 stands for (examples/tilting_table.py)
 
 
 def fmt(value, digits=1):
@@ -39,9 +41,21 @@ def load(folder: str) -> dict[str, dict]:
 
 
 def model_key(inputs: dict) -> tuple:
-    """What defines the model apart from the particle size."""
+    """What defines the model apart from the particle size and the bond gap."""
     return ((inputs["arrangement"],) + tuple(inputs.get(name) for name in CALIBRATION)
-            + tuple(inputs.get(name, value) for name, value in ADDED.items()))
+            + tuple(inputs.get(name, value) for name, value in ADDED.items() if name != "bond_gap"))
+
+
+def bond_gap(inputs: dict) -> float:
+    """The bond gap [m] a run used."""
+    return inputs.get("bond_gap", ADDED["bond_gap"]) or TABLE_BOND_GAP
+
+
+def same_bond_density(a: dict, b: dict) -> bool:
+    """Bond gaps in proportion to the mean radius, (rmin + rmax) / 2, bond as many neighbours per
+    disc whatever the particle size (docs/tilting_table.md, "Bond gap")."""
+    relative = [bond_gap(i) / (i["rmin"] + i["rmax"]) for i in (a, b)]
+    return abs(relative[0] - relative[1]) <= 0.01 * relative[1]
 
 
 def numerics(inputs: dict) -> dict:
@@ -57,26 +71,48 @@ def phi_change(s: dict, ref: dict) -> tuple[Optional[list[float]], str]:
     return phi, fmt(phi)
 
 
+def tilt_change(s: dict, ref: dict) -> tuple[Optional[bool], str]:
+    """Whether run ``s``'s failure tilt is within the tolerance of ``ref``'s (None: the runs do
+    not tell), and the text for a table. One of them at least failed; one that stood to its last
+    stage would have failed above it."""
+    tilts = [run["failure_tilt_deg"] for run in (s, ref)]
+    if None not in tilts:
+        return abs(tilts[0] - tilts[1]) <= SIZE_TOLERANCE_DEG, f"{tilts[0] - tilts[1]:+.1f}"
+    text = " vs ".join(fmt(t) if t is not None else f"stands to {fmt(run.get('stable_up_to_deg'))}"
+                       for t, run in zip(tilts, (s, ref)))
+    failed, stood = (tilts[1], s) if tilts[0] is None else (tilts[0], ref)
+    if (stood.get("stable_up_to_deg") or 0.0) - failed > SIZE_TOLERANCE_DEG:
+        return False, text
+    return None, text
+
+
 def size_check(runs: dict[str, dict]) -> list[str]:
-    """Lines comparing each packing of a model with the next coarser one (of the same numerical
-    settings where there is one): R 1-2.5 mm with R 1-4 mm, the issue's pair, and R 1-4 mm with
-    R 2-8 mm, the coarse runs the calibration used."""
+    """Lines comparing each packing of a model with the next coarser one of the same bond gap,
+    and with the next coarser one of the same bond density (of the same numerical settings
+    where there is one): R 1-2.5 mm with R 1-4 mm, the issue's pair, and R 1-4 mm with R 2-8
+    mm, the coarse runs the calibration used. Pairs in which neither run failed are left out."""
     models: dict[tuple, list[tuple[str, dict]]] = {}
     for name, s in runs.items():
-        if s["failure_tilt_deg"] is not None:
-            models.setdefault(model_key(s["inputs"]), []).append((name, s))
+        models.setdefault(model_key(s["inputs"]), []).append((name, s))
     lines = []
     for group in models.values():
         for name, s in group:
-            coarser = [run for run in group if run[1]["inputs"]["rmax"] > s["inputs"]["rmax"]]
-            if not coarser:
-                continue
-            same = [run for run in coarser if numerics(run[1]["inputs"]) == numerics(s["inputs"])]
-            coarse_name, coarse = min(same or coarser, key=lambda run: run[1]["inputs"]["rmax"])
-            tilt = s["failure_tilt_deg"] - coarse["failure_tilt_deg"]
-            phi, phi_text = phi_change(s, coarse)
-            ok = phi is not None and all(abs(d) <= SIZE_TOLERANCE_DEG for d in [tilt, *phi])
-            lines.append(f"| {name} vs {coarse_name} | {tilt:+.1f} | {phi_text} | {'yes' if ok else 'no'} |")
+            for bonding in (lambda a, b: bond_gap(a) == bond_gap(b), same_bond_density):
+                coarser = [run for run in group if run[1]["inputs"]["rmax"] > s["inputs"]["rmax"]
+                           and bonding(s["inputs"], run[1]["inputs"])]
+                if not coarser:
+                    continue
+                same = [run for run in coarser if numerics(run[1]["inputs"]) == numerics(s["inputs"])]
+                coarse_name, coarse = min(same or coarser, key=lambda run: run[1]["inputs"]["rmax"])
+                failed = [run["failure_tilt_deg"] is not None for run in (s, coarse)]
+                if not any(failed):
+                    continue
+                tilt_ok, tilt_text = tilt_change(s, coarse)
+                phi, phi_text = phi_change(s, coarse) if all(failed) else (None, "-")
+                ok = {True: "yes" if phi is not None and all(abs(d) <= SIZE_TOLERANCE_DEG for d in phi) else "no",
+                      False: "no", None: "-"}[tilt_ok]
+                gaps = f"{1e3 * bond_gap(s['inputs']):g} vs {1e3 * bond_gap(coarse['inputs']):g}"
+                lines.append(f"| {name} vs {coarse_name} | {gaps} | {tilt_text} | {phi_text} | {ok} |")
     return lines
 
 
@@ -155,9 +191,10 @@ def main(folder: str) -> None:
     print("\n".join(rows))
     checks = size_check(runs)
     if checks:
-        print(f"\nParticle size (finer minus next coarser packing of the same model; within {SIZE_TOLERANCE_DEG:g} deg?):\n")
-        print("| runs | failure tilt (°) | φ (°) | within tolerance |")
-        print("|---|---|---|---|")
+        print(f"\nParticle size (finer minus next coarser packing of the same model, of the same bond gap or the "
+              f"same bond density; within {SIZE_TOLERANCE_DEG:g} deg?):\n")
+        print("| runs | bond gap (mm) | failure tilt (°) | φ (°) | within tolerance |")
+        print("|---|---|---|---|---|")
         print("\n".join(checks))
     spreads = seed_spread(runs)
     if spreads:

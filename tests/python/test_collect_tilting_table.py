@@ -15,35 +15,50 @@ def summary(rmax: float, tilt, phi: list, strength: float = 130e3, arrangement: 
 def test_each_packing_is_compared_with_the_next_coarser_of_the_same_model():
     runs = {"coarse": summary(0.008, 34.0, [16.0]), "fine": summary(0.0025, 36.0, [14.5]),
             "medium": summary(0.004, 37.0, [16.0]), "other_model": summary(0.002, 20.0, [30.0], strength=100e3),
-            "stands": summary(0.001, None, [])}
+            "stands": {**summary(0.001, None, []), "stable_up_to_deg": 37.0}}
     lines = sorted(collect.size_check(runs))
-    assert lines == ["| fine vs medium | -1.0 | -1.5 | yes |", "| medium vs coarse | +3.0 | 0.0 | no |"]
+    assert lines == ["| fine vs medium | 1.05 vs 1.05 | -1.0 | -1.5 | yes |",
+                     "| medium vs coarse | 1.05 vs 1.05 | +3.0 | 0.0 | no |",
+                     "| stands vs fine | 1.05 vs 1.05 | stands to 37.0 vs 36.0 | - | - |"]  # may fail at 38
+
+
+def test_a_packing_that_stands_beyond_the_tolerance_fails_the_check_and_two_that_stand_say_nothing():
+    runs = {"coarse": summary(0.004, 40.0, [15.0]), "fine": {**summary(0.0025, None, []), "stable_up_to_deg": 50.0},
+            "coarse_s2": {**summary(0.004, None, [], seed=2), "stable_up_to_deg": 44.0},
+            "fine_s2": {**summary(0.0025, None, [], seed=2), "stable_up_to_deg": 44.0}}
+    assert collect.size_check(runs) == ["| fine vs coarse | 1.05 vs 1.05 | stands to 50.0 vs 40.0 | - | no |"]
+
+
+def test_a_bond_gap_in_proportion_to_the_mean_radius_is_compared_at_the_same_bond_density():
+    runs = {"coarse": summary(0.004, 40.0, [15.0], bond_gap=0.0), "coarse_gap": summary(0.004, 30.0, [5.0], bond_gap=0.7e-3),
+            "fine_dense": summary(0.0025, 41.0, [14.0], bond_gap=1.05e-3 * 3.125 / 5)}  # (rmin + rmax) 5 and 3.125 mm
+    assert collect.size_check(runs) == ["| fine_dense vs coarse | 0.65625 vs 1.05 | +1.0 | -1.0 | yes |"]
 
 
 def test_a_different_number_of_surfaces_fails_the_check():
     runs = {"coarse": summary(0.008, 19.0, [24.0], arrangement="random"),
             "fine": summary(0.004, 19.0, [14.0, 24.0], arrangement="random")}
-    assert collect.size_check(runs) == ["| fine vs coarse | +0.0 | 2 vs 1 surfaces | no |"]
+    assert collect.size_check(runs) == ["| fine vs coarse | 1.05 vs 1.05 | +0.0 | 2 vs 1 surfaces | no |"]
 
 
 def test_a_model_with_shrunk_overlaps_is_compared_only_with_its_own_kind():
     runs = {"coarse": summary(0.008, 34.0, [16.0]), "fine_shrunk": summary(0.004, 38.0, [12.0], shrink_overlaps=1),
             "coarse_shrunk": summary(0.008, 37.0, [12.5], shrink_overlaps=1), "fine_old": summary(0.004, 33.0, [15.0], shrink_overlaps=0)}
-    assert sorted(collect.size_check(runs)) == ["| fine_old vs coarse | -1.0 | -1.0 | yes |",
-                                                "| fine_shrunk vs coarse_shrunk | +1.0 | -0.5 | yes |"]
+    assert sorted(collect.size_check(runs)) == ["| fine_old vs coarse | 1.05 vs 1.05 | -1.0 | -1.0 | yes |",
+                                                "| fine_shrunk vs coarse_shrunk | 1.05 vs 1.05 | +1.0 | -0.5 | yes |"]
 
 
 def test_a_finer_packing_is_compared_with_the_coarse_run_of_its_own_time_step():
     runs = {"coarse": summary(0.008, 34.0, [16.0]), "coarse_fast": summary(0.008, 30.0, [10.0], timestep_safety=0.8),
             "fine_fast": summary(0.004, 31.0, [11.0], timestep_safety=0.8)}
-    assert collect.size_check(runs) == ["| fine_fast vs coarse_fast | +1.0 | 1.0 | yes |"]
+    assert collect.size_check(runs) == ["| fine_fast vs coarse_fast | 1.05 vs 1.05 | +1.0 | 1.0 | yes |"]
 
 
 def test_a_finer_packing_with_softened_joints_is_compared_with_the_coarse_run_of_the_same_joints():
     runs = {"coarse": summary(0.008, 32.0, [18.5], timestep_safety=0.8),
             "coarse_soft": summary(0.008, 30.0, [12.0], timestep_safety=0.8, joint_stiffness_scale=0.01),
             "fine_soft": summary(0.004, 31.0, [13.0], timestep_safety=0.8, joint_stiffness_scale=0.01)}
-    assert collect.size_check(runs) == ["| fine_soft vs coarse_soft | +1.0 | 1.0 | yes |"]
+    assert collect.size_check(runs) == ["| fine_soft vs coarse_soft | 1.05 vs 1.05 | +1.0 | 1.0 | yes |"]
 
 
 def test_softened_joints_are_compared_with_the_same_run_at_table_stiffness():
@@ -60,7 +75,7 @@ def test_seeds_give_the_spread_of_one_model_and_a_finer_packing_meets_its_own_se
             "s3": summary(0.008, 32.0, [12.0], seed=3), "fine_s2": summary(0.004, 33.0, [17.0], seed=2),
             "alone": summary(0.004, 30.0, [10.0], strength=100e3)}
     assert collect.seed_spread(runs) == ["| ideal R 2–8 mm, safety 0.5 | 1, 2, 3 | 32.0–34.0 | 8.1–18.5 |"]
-    assert collect.size_check(runs) == ["| fine_s2 vs s2 | -1.0 | -1.5 | yes |"]
+    assert collect.size_check(runs) == ["| fine_s2 vs s2 | 1.05 vs 1.05 | -1.0 | -1.5 | yes |"]
 
 
 def test_a_failure_by_the_stage_time_limit_is_marked_in_the_table(tmp_path, capsys):
