@@ -455,6 +455,8 @@ summary = dict(
     failure_points=result["failure_points"], slope_height=result["height"], **run_record())
 output.write_summary(table.out, inputs, **summary)
 
+phi_text = (f"phi = {', '.join(f'{p:.1f}' for p in summary['phi_deg'])} deg" if summary["phi_deg"]
+            else "no failure surface found")
 radii = [O.bodies[i].shape.radius for i in ids]
 view = plots.around(np.array(layout.section()), 0.15)  # discs fallen off the table stay out of it
 cracks = np.array([tuple(p)[:2] for p in law.breakPosition]).reshape(-1, 2)
@@ -462,15 +464,16 @@ plots.slope(table.out, "slope_before", np.array(state["reference"]), radii, np.z
             limits=view, title=f"{table.arrangement} arrangement at the last equilibrium")
 plots.slope(table.out, "slope_after", result["now"], radii, result["disp"], cracks, list(law.breakMode),
             result["planes"], toe=(layout.toe_x, 0.0), limits=view,
-            title=f"{table.arrangement}: failed at {state['failure_tilt']:.1f} deg, "
-                  f"phi = {', '.join(f'{p:.1f}' for p in summary['phi_deg'])} deg")
+            title=f"{table.arrangement}: failed at {state['failure_tilt']:.1f} deg, {phi_text}")
 plots.tilt_history(table.out, state["energy"], points, state["failure_tilt"])
 plots.monitoring(table.out, points, points.labels[::2])
 if summary["failed_in_first_stage"]:
     print(f"WARNING: the first stage ({table.start_tilt} deg) failed: the failure tilt is at most that; "
           "rerun with a lower start_tilt")
+distances = ", ".join(f"{name} {summary[key]:.2f}" if summary[key] is not None else f"{name} -"
+                      for name, key in (("S/H", "s_over_h"), ("T/H", "t_over_h")))
 print(f"{table.arrangement}: failure tilt {state['failure_tilt']:.1f} deg (thesis "
-      f"{THESIS[table.arrangement]['failure_tilt_deg']}), phi {summary['phi_deg']} (thesis "
-      f"{THESIS[table.arrangement]['phi_deg']}), S/H {summary['s_over_h']}, T/H {summary['t_over_h']}, "
+      f"{THESIS[table.arrangement]['failure_tilt_deg']}), {phi_text} (thesis "
+      f"{THESIS[table.arrangement]['phi_deg']}), {distances}, "
       f"{summary['tensile_breaks']} tensile / {summary['shear_breaks']} shear breaks, {len(ids)} discs, "
       f"{summary['wall_time']:.0f} s")
