@@ -6,7 +6,8 @@ Prints a Markdown table (pasted into README.md) from every ``<folder>/*/summary.
 the particle-size check (issue 4: failure tilt and phi within 2 deg of the coarser packing of
 the same model): runs that differ only in rmin/rmax, each compared with the next coarser one of
 the same bond gap and with the next coarser one of the same bond density (a gap in proportion to
-the mean radius); a run that stood to its last stage counts as failing above it; and the spread of failure tilt and phi over packings that differ only in their seed.
+the mean radius); a run that stood to its last stage counts as failing above it; and the
+spread of failure tilt and phi over packings that differ only in their seed.
 """
 import glob
 import json
@@ -86,33 +87,47 @@ def tilt_change(s: dict, ref: dict) -> tuple[Optional[bool], str]:
     return None, text
 
 
+def same_gap(a: dict, b: dict) -> bool:
+    return bond_gap(a) == bond_gap(b)
+
+
+def next_coarser(group: list[tuple[str, dict]], s: dict, bonding) -> Optional[tuple[str, dict]]:
+    """The run of ``group`` with the next larger rmax than ``s`` that ``bonding(s, run)`` accepts,
+    of the same numerical settings where there is one."""
+    coarser = [run for run in group if run[1]["inputs"]["rmax"] > s["inputs"]["rmax"]
+               and bonding(s["inputs"], run[1]["inputs"])]
+    same = [run for run in coarser if numerics(run[1]["inputs"]) == numerics(s["inputs"])]
+    return min(same or coarser, key=lambda run: run[1]["inputs"]["rmax"]) if coarser else None
+
+
+def size_row(name: str, s: dict, coarse_name: str, coarse: dict) -> Optional[str]:
+    """One line of the size check; None if neither run failed (they tell nothing)."""
+    failed = [run["failure_tilt_deg"] is not None for run in (s, coarse)]
+    if not any(failed):
+        return None
+    tilt_ok, tilt_text = tilt_change(s, coarse)
+    phi, phi_text = phi_change(s, coarse) if all(failed) else (None, "-")
+    phi_ok = phi is not None and all(abs(d) <= SIZE_TOLERANCE_DEG for d in phi)
+    ok = "-" if tilt_ok is None else "yes" if tilt_ok and phi_ok else "no"
+    gaps = f"{1e3 * bond_gap(s['inputs']):g} vs {1e3 * bond_gap(coarse['inputs']):g}"
+    return f"| {name} vs {coarse_name} | {gaps} | {tilt_text} | {phi_text} | {ok} |"
+
+
 def size_check(runs: dict[str, dict]) -> list[str]:
     """Lines comparing each packing of a model with the next coarser one of the same bond gap,
-    and with the next coarser one of the same bond density (of the same numerical settings
-    where there is one): R 1-2.5 mm with R 1-4 mm, the issue's pair, and R 1-4 mm with R 2-8
-    mm, the coarse runs the calibration used. Pairs in which neither run failed are left out."""
+    and with the next coarser one of the same bond density: R 1-2.5 mm with R 1-4 mm, the
+    issue's pair, and R 1-4 mm with R 2-8 mm, the coarse runs the calibration used."""
     models: dict[tuple, list[tuple[str, dict]]] = {}
     for name, s in runs.items():
         models.setdefault(model_key(s["inputs"]), []).append((name, s))
     lines = []
     for group in models.values():
         for name, s in group:
-            for bonding in (lambda a, b: bond_gap(a) == bond_gap(b), same_bond_density):
-                coarser = [run for run in group if run[1]["inputs"]["rmax"] > s["inputs"]["rmax"]
-                           and bonding(s["inputs"], run[1]["inputs"])]
-                if not coarser:
-                    continue
-                same = [run for run in coarser if numerics(run[1]["inputs"]) == numerics(s["inputs"])]
-                coarse_name, coarse = min(same or coarser, key=lambda run: run[1]["inputs"]["rmax"])
-                failed = [run["failure_tilt_deg"] is not None for run in (s, coarse)]
-                if not any(failed):
-                    continue
-                tilt_ok, tilt_text = tilt_change(s, coarse)
-                phi, phi_text = phi_change(s, coarse) if all(failed) else (None, "-")
-                ok = {True: "yes" if phi is not None and all(abs(d) <= SIZE_TOLERANCE_DEG for d in phi) else "no",
-                      False: "no", None: "-"}[tilt_ok]
-                gaps = f"{1e3 * bond_gap(s['inputs']):g} vs {1e3 * bond_gap(coarse['inputs']):g}"
-                lines.append(f"| {name} vs {coarse_name} | {gaps} | {tilt_text} | {phi_text} | {ok} |")
+            for bonding in (same_gap, same_bond_density):
+                partner = next_coarser(group, s, bonding)
+                row = size_row(name, s, *partner) if partner else None
+                if row:
+                    lines.append(row)
     return lines
 
 
