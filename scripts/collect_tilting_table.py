@@ -151,7 +151,8 @@ def seed_spread(runs: dict[str, dict]) -> list[str]:
         seeds = ", ".join(str(numerics(s["inputs"])["seed"]) for s in group)
         phi_range = f"{min(phis):.1f}–{max(phis):.1f}" if phis else "-"
         joints = f", joint stiffness x {key[-1]:g}" if key[-1] != 1 else ""
-        lines.append(f"| {key[0]} R {1e3 * key[-4]:g}–{1e3 * key[-3]:g} mm, safety {key[-2]:g}{joints} | {seeds} | "
+        strength = f" {key[1] / 1e3:g} kPa" if key[1] else ""  # 0: Table 5-2's
+        lines.append(f"| {key[0]}{strength} R {1e3 * key[-4]:g}–{1e3 * key[-3]:g} mm, safety {key[-2]:g}{joints} | {seeds} | "
                      f"{min(tilts):.1f}–{max(tilts):.1f} | {phi_range} |")
     return lines
 

@@ -74,7 +74,7 @@ def test_seeds_give_the_spread_of_one_model_and_a_finer_packing_meets_its_own_se
     runs = {"s1": summary(0.008, 32.0, [8.1]), "s2": summary(0.008, 34.0, [18.5], seed=2),
             "s3": summary(0.008, 32.0, [12.0], seed=3), "fine_s2": summary(0.004, 33.0, [17.0], seed=2),
             "alone": summary(0.004, 30.0, [10.0], strength=100e3)}
-    assert collect.seed_spread(runs) == ["| ideal R 2–8 mm, safety 0.5 | 1, 2, 3 | 32.0–34.0 | 8.1–18.5 |"]
+    assert collect.seed_spread(runs) == ["| ideal 130 kPa R 2–8 mm, safety 0.5 | 1, 2, 3 | 32.0–34.0 | 8.1–18.5 |"]
     assert collect.size_check(runs) == ["| fine_s2 vs s2 | 1.05 vs 1.05 | -1.0 | -1.5 | yes |"]
 
 
