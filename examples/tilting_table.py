@@ -306,7 +306,7 @@ def slope_energy() -> float:
     return tilting.kinetic_energy_above(ids, OFF_TABLE)
 
 
-progress = monitor.Progress(energy=slope_energy)
+progress = monitor.Progress(energy=lambda: state["energy"][-1][2])  # what on_chunk just recorded
 earlier_wall_time = state.get("wall_time", 0.0)  # of the runs this one resumes
 last_save = progress.wall_time
 
