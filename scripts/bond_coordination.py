@@ -2,8 +2,8 @@
 
     ./yade -x -n scripts/bond_coordination.py results/tilting_table/<run> [0.525,1.05,2.1]
 
-Reads the discs as the run bonded them (positions of its ParaView series' first snapshot less
-their displacements, radii) and prints, for each gap [mm], the mean number of discs within that
+Reads the discs as the run bonded them (``packing_overlaps.bonded_discs``: radii from the
+checkpoint's scene, centres from its ParaView series' reference) and prints, for each gap [mm], the mean number of discs within that
 gap of a disc's surface: the bonds per disc before the joints cut those across them. A gap fixed
 in mm (Table 5-2: 1.05 mm) bonds the more neighbours the finer the packing.
 """
@@ -12,26 +12,22 @@ import sys
 from typing import Sequence
 
 import numpy as np
-from vtkmodules.util.numpy_support import vtk_to_numpy
 
 sys.path.insert(0, os.path.join(os.environ["TOPPLING_REPO"], "scripts"))  # set by the ./yade launcher
-from bond_stress_history import read_grid  # noqa: E402
+from packing_overlaps import bonded_discs  # noqa: E402
 from toppling import packing  # noqa: E402
 
 
-def coordination(centres: np.ndarray, radii: np.ndarray, gaps: Sequence[float]) -> list[float]:
+def coordination(centres: Sequence[tuple[float, float]], radii: Sequence[float], gaps: Sequence[float]) -> list[float]:
     """Mean number of neighbours within each of ``gaps`` [m] of a disc's surface."""
-    pairs = packing.pairs_within([tuple(c) for c in centres], list(radii), max(gaps))
+    pairs = packing.pairs_within(centres, radii, max(gaps))
     surface = np.array([distance - radii[i] - radii[j] for i, j, distance in pairs])
     return [2 * float((surface <= g).sum()) / len(radii) for g in gaps]
 
 
 def main(folder: str, gaps_mm: Sequence[float] = (0.525, 1.05, 2.1)) -> None:
-    discs = read_grid(os.path.join(folder, "paraview", "discs_00000.vtu"))
-    data = discs.GetPointData()
-    centres = (vtk_to_numpy(discs.GetPoints().GetData()) - vtk_to_numpy(data.GetArray("displacement")))[:, :2]
-    radii = vtk_to_numpy(data.GetArray("radius"))
-    print(f"{len(radii)} discs, mean radius {1e3 * radii.mean():.2f} mm")
+    _, centres, radii = bonded_discs(folder)
+    print(f"{len(radii)} discs, mean radius {1e3 * np.mean(radii):.2f} mm")
     print("| gap (mm) | " + " | ".join(f"{g:g}" for g in gaps_mm) + " |")
     print("|---|" + "---|" * len(gaps_mm))
     values = coordination(centres, radii, [1e-3 * g for g in gaps_mm])

@@ -143,13 +143,20 @@ def test_crack_heights_tells_roots_from_bonds_above_the_table(empty_scene, tmp_p
     assert rows[1][1:] == ["1", "[1, 0, 0, 0, 0]", "[0, 0, 1, 0, 0]"]  # only the upper bond is left
 
 
+def save_bonded_run(folder, ids, reference, equilibrium=None):
+    """A tilting-table run's checkpoint as the scripts read it: the scene, and in checkpoint.json
+    the discs as bonded (the ParaView series' reference) and the last equilibrium's positions."""
+    O.save(str(folder / "checkpoint.yade.bz2"))
+    (folder / "checkpoint.json").write_text(json.dumps(
+        {"ids": ids, "reference": equilibrium or reference, "series": {"ids": ids, "reference": reference}}))
+
+
 def test_bond_coordination_counts_neighbours_within_each_gap(empty_scene, tmp_path, capsys):
     """scripts/bond_coordination.py on three discs in a row, 0.5 and 1.5 radii apart at their
     surfaces: no pair within a quarter radius, one within one radius, both within two."""
     coordination = load_script("bond_coordination")
-    O.bodies.append([scene.disc((x, 0), R, material()) for x in (0, 2.5 * R, 6 * R)])
-    O.engines = scene.engines(gravity=(0, 0, 0))
-    paraview.ParaViewSeries(str(tmp_path / "paraview")).snapshot()
+    ids = scene.add_discs([(0, 0, R), (2.5 * R, 0, R), (6 * R, 0, R)], material())
+    save_bonded_run(tmp_path, ids, reference=[(0, 0, 0), (2.5 * R, 0, 0), (6 * R, 0, 0)])
     coordination.main(str(tmp_path), [1e3 * g for g in (0.25 * R, R, 2 * R)])
     row = capsys.readouterr().out.splitlines()[-1]
     assert [float(c) for c in row.split("|")[2:-1]] == pytest.approx([0, 2 / 3, 4 / 3], abs=0.01)
@@ -178,10 +185,7 @@ def test_packing_overlaps_reports_the_discs_as_bonded(empty_scene, tmp_path):
     overlaps = load_script("packing_overlaps")
     ids = scene.add_discs([(0, 0, R), (2 * R, 0, R), (4 * R, 0, R)], material())
     reference = [(0, 0, 0), (1.98 * R, 0, 0), (4 * R, 0, 0)]  # as bonded: the first pair overlapped by 0.02 R
-    O.save(str(tmp_path / "checkpoint.yade.bz2"))
-    equilibrium = [(0, 0, 0), (2 * R, 0, 0), (4 * R, 0, 0)]
-    (tmp_path / "checkpoint.json").write_text(json.dumps(
-        {"ids": ids, "reference": equilibrium, "series": {"ids": ids, "reference": reference}}))
+    save_bonded_run(tmp_path, ids, reference, equilibrium=[(0, 0, 0), (2 * R, 0, 0), (4 * R, 0, 0)])
     line = overlaps.report(str(tmp_path))
     assert "3 discs, 1 overlapping pairs" in line and f"largest {0.02 * R:.2g} m (discs {ids[0]} and {ids[1]})" in line
     assert f"disc area {3 * math.pi * R * R:.6f} m2" in line
