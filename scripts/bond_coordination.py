@@ -3,9 +3,10 @@
     ./yade -x -n scripts/bond_coordination.py results/tilting_table/<run> [0.525,1.05,2.1]
 
 Reads the discs as the run bonded them (``packing_overlaps.bonded_discs``: radii from the
-checkpoint's scene, centres from its ParaView series' reference) and prints, for each gap [mm], the mean number of discs within that
-gap of a disc's surface: the bonds per disc before the joints cut those across them. A gap fixed
-in mm (Table 5-2: 1.05 mm) bonds the more neighbours the finer the packing.
+checkpoint's scene, centres from its ParaView series' reference) and prints, for each gap [mm],
+the mean number of discs within that gap of a disc's surface: the bonds per disc before the
+joints cut those across them. A gap fixed in mm (Table 5-2: 1.05 mm) bonds the more neighbours
+the finer the packing.
 """
 import os
 import sys
