@@ -9,7 +9,7 @@ tensile stress beam theory gives at the base then, sigma = 3 gamma h^2 sin(a) / 
 gamma h cos(a), to compare with the block material's tensile strength (31.37 kPa, thesis
 §5.2.1): a continuous column stronger than the slope needs stands when its neighbours fall.
 
-    ./yade -x -n -j1 scripts/column_bending.py rmin rmax bond_tensile_strength [height rate arrangement]
+    ./yade -x -n -j1 scripts/column_bending.py rmin rmax bond_tensile_strength [height rate arrangement seed]
 """
 import math
 import os
@@ -48,9 +48,11 @@ def main() -> None:
     height = float(args[3]) if len(args) > 3 else 0.3
     rate = float(args[4]) if len(args) > 4 else 10.0
     arrangement = args[5] if len(args) > 5 else "ideal"
+    seed = int(args[6]) if len(args) > 6 else 1
     if rate <= 0 or height <= 0:
         raise ValueError(f"height = {height} m, rate = {rate} deg/s are invalid: both must be > 0")
-    model = definitions(arrangement=f"'{arrangement}'", rmin=rmin, rmax=rmax, bond_tensile_strength=strength)
+    model = definitions(arrangement=f"'{arrangement}'", rmin=rmin, rmax=rmax, bond_tensile_strength=strength,
+                        seed=seed)
     width = model["WIDTH"]
     ids = build_column(model, width, height)
     top = max(ids, key=lambda i: O.bodies[i].state.pos[1])

@@ -9,7 +9,8 @@ collect = load_script("collect_tilting_table")
 def summary(rmax: float, tilt, phi: list, strength: float = 130e3, arrangement: str = "ideal", **numerics) -> dict:
     inputs = {"arrangement": arrangement, "rmin": rmax / 4, "rmax": rmax, "bond_tensile_strength": strength,
               "main_joint_friction": 0.0, "base_joint_friction": 0.0, **numerics}
-    return {"inputs": inputs, "failure_tilt_deg": tilt, "phi_deg": phi}
+    return {"inputs": inputs, "failure_tilt_deg": tilt, "phi_deg": phi,
+            "thesis": {"failure_tilt_deg": 35 if arrangement == "ideal" else 19}}
 
 
 def test_each_packing_is_compared_with_the_next_coarser_of_the_same_model():
@@ -74,8 +75,15 @@ def test_seeds_give_the_spread_of_one_model_and_a_finer_packing_meets_its_own_se
     runs = {"s1": summary(0.008, 32.0, [8.1]), "s2": summary(0.008, 34.0, [18.5], seed=2),
             "s3": summary(0.008, 32.0, [12.0], seed=3), "fine_s2": summary(0.004, 33.0, [17.0], seed=2),
             "alone": summary(0.004, 30.0, [10.0], strength=100e3)}
-    assert collect.seed_spread(runs) == ["| ideal 130 kPa R 2–8 mm, safety 0.5 | 1, 2, 3 | 32.0–34.0 | 8.1–18.5 |"]
+    assert collect.seed_spread(runs) == ["| ideal 130 kPa R 2–8 mm, safety 0.5 | 1, 2, 3 | 32.0–34.0 | 32.7 ± 1.2 | 3 of 3 | 8.1–18.5 |"]
     assert collect.size_check(runs) == ["| fine_s2 vs s2 | 1.05 vs 1.05 | -1.0 | -1.5 | yes |"]
+
+
+def test_a_seed_that_stands_counts_outside_the_target_and_outside_the_figures():
+    runs = {"s1": summary(0.004, 36.0, [17.0]), "s2": summary(0.004, 30.0, [14.4], seed=2),
+            "s3": {**summary(0.004, None, [], seed=3), "stable_up_to_deg": 44.0}}
+    assert collect.seed_spread(runs) == ["| ideal 130 kPa R 1–4 mm, safety 0.5 | 1, 2, 3 | 30.0–36.0 | 33.0 ± 4.2 | "
+                                         "1 of 3 (1 stood) | 14.4–17.0 |"]
 
 
 def test_a_failure_by_the_stage_time_limit_is_marked_in_the_table(tmp_path, capsys):
