@@ -2,14 +2,17 @@
 
 A column of the ideal (or random) tilting-table material, 5 cm wide and ``height`` tall, cut
 from a packing as the example's columns are, its bottom discs fixed, is tilted by turning
-gravity at ``rate`` deg/s until it breaks. Prints the tilt of the first broken bond and the
-tilt at which the top has moved half the width (the column has broken and toppled;
-its elastic bending is < 8 mm even at 90 deg), each with the
-tensile stress beam theory gives at the base then, sigma = 3 gamma h^2 sin(a) / b -
-gamma h cos(a), to compare with the block material's tensile strength (31.37 kPa, thesis
-§5.2.1): a continuous column stronger than the slope needs stands when its neighbours fall.
+gravity at ``rate`` deg/s until it breaks. Prints the tilt and height of the first broken bond
+and the tilt at which the top has moved half the width (the column has broken and toppled; its
+elastic bending is < 8 mm even at 90 deg), each with the tensile stress beam theory gives at the
+base then, sigma = 3 gamma h^2 sin(a) / b - gamma h cos(a), to compare with the block material's
+tensile strength (31.37 kPa, thesis §5.2.1): a continuous column stronger than the slope needs
+stands when its neighbours fall.
 
-    ./yade -x -n -j1 scripts/column_bending.py rmin rmax bond_tensile_strength [height rate arrangement seed]
+    ./yade -x -n -j1 scripts/column_bending.py rmin rmax bond_tensile_strength [name=value ...]
+
+Names: ``height`` [m] (0.3), ``rate`` [deg/s] (10), or any parameter of the tilting-table example
+(``seed=2``, ``bond_gap=0.735e-3``, ``arrangement=random``, ...), at the example's default otherwise.
 """
 import math
 import os
@@ -42,39 +45,42 @@ def base_tension(gamma: float, width: float, height: float, tilt_deg: float) -> 
 
 def main() -> None:
     args = sys.argv[1:]
-    if len(args) < 3:
+    if len(args) < 3 or not all("=" in a for a in args[3:]):
         raise SystemExit(__doc__)
     rmin, rmax, strength = (float(a) for a in args[:3])
-    height = float(args[3]) if len(args) > 3 else 0.3
-    rate = float(args[4]) if len(args) > 4 else 10.0
-    arrangement = args[5] if len(args) > 5 else "ideal"
-    seed = int(args[6]) if len(args) > 6 else 1
+    options = dict(a.split("=", 1) for a in args[3:])
+    height, rate = float(options.pop("height", 0.3)), float(options.pop("rate", 10.0))
     if rate <= 0 or height <= 0:
         raise ValueError(f"height = {height} m, rate = {rate} deg/s are invalid: both must be > 0")
-    model = definitions(arrangement=f"'{arrangement}'", rmin=rmin, rmax=rmax, bond_tensile_strength=strength,
-                        seed=seed)
+    if "arrangement" in options:  # a table cell holds a Python literal
+        options["arrangement"] = repr(options["arrangement"].strip("'\""))
+    model = definitions(rmin=rmin, rmax=rmax, bond_tensile_strength=strength, **options)
+    table = model["table"]
     width = model["WIDTH"]
     ids = build_column(model, width, height)
     top = max(ids, key=lambda i: O.bodies[i].state.pos[1])
     O.run(int(0.2 / O.dt), True)  # settle under gravity on the level base
     gamma = sum(O.bodies[i].state.mass for i in ids) * tilting.G / (width * height * model["T"])  # bulk [N/m3]
     reference = tuple(O.bodies[top].state.pos)
-    law, tilt, first, start = scene.bond_law(), 0.0, None, O.time
+    law, tilt, first, broke, start = scene.bond_law(), 0.0, None, False, O.time
     while tilt < 90:
         scene.run_checked(1e-3, f"the column at {tilt:.1f} deg")
         tilt = rate * (O.time - start)
         tilting.set_tilt(tilt)
         if first is None and len(law.breakMode):
-            first = (tilt, scene.BREAK_MODES[law.breakMode[0]])
-        moved = math.dist(tuple(O.bodies[top].state.pos)[:2], reference[:2])
-        if moved > 0.5 * width:  # bending alone moves it < 8 mm even at 90 deg
+            first = (tilt, scene.BREAK_MODES[law.breakMode[0]], law.breakPosition[0][1])
+        broke = math.dist(tuple(O.bodies[top].state.pos)[:2], reference[:2]) > 0.5 * width
+        if broke:  # bending alone moves it < 8 mm even at 90 deg
             break
-    print(f"column {1e3 * width:g} x {1e3 * height:g} mm, {arrangement} rock, bond tensile strength "
-          f"{strength / 1e3:g} kPa, R {1e3 * rmin:g}-{1e3 * rmax:g} mm, {len(ids)} discs, {rate:g} deg/s, "
-          f"unit weight {gamma / 1e3:.1f} kN/m3")
+    print(f"column {1e3 * width:g} x {1e3 * height:g} mm, {table.arrangement} rock, bond tensile strength "
+          f"{strength / 1e3:g} kPa, R {1e3 * rmin:g}-{1e3 * rmax:g} mm (seed {table.seed}, bond gap "
+          f"{1e3 * model['BOND_GAP']:g} mm), {len(ids)} discs, {rate:g} deg/s, unit weight {gamma / 1e3:.1f} kN/m3")
     if first:
-        print(f"first bond broken ({first[1]}) at {first[0]:.1f} deg: beam tension at the base "
-              f"{base_tension(gamma, width, height, first[0]) / 1e3:.1f} kPa")
+        print(f"first bond broken ({first[1]}, {1e3 * first[2]:.1f} mm above the base) at {first[0]:.1f} deg: "
+              f"beam tension at the base {base_tension(gamma, width, height, first[0]) / 1e3:.1f} kPa")
+    if not broke:
+        print(f"stood to {tilt:.1f} deg")
+        return
     print(f"failed (top moved {1e3 * 0.5 * width:g} mm) at {tilt:.1f} deg: beam tension at the base "
           f"{base_tension(gamma, width, height, tilt) / 1e3:.1f} kPa "
           f"(block material: {BLOCK_TENSILE_STRENGTH / 1e3:.2f} kPa)")
