@@ -97,3 +97,12 @@ def test_a_failure_by_the_stage_time_limit_is_marked_in_the_table(tmp_path, caps
     collect.main(str(tmp_path))
     row = capsys.readouterr().out.splitlines()[2]
     assert row.startswith("| random_step1 | random |") and "| 20.0 | 21.0 (time limit) | 19.0 | 31.7 | 14.0, 24.0 |" in row
+
+
+def test_a_first_stage_failure_is_an_upper_bound_and_a_rerun_from_lower_replaces_it():
+    runs = {"s1": summary(0.004, 36.0, [17.0]), "s2": summary(0.004, 42.0, [14.6], seed=2),
+            "s3": {**summary(0.004, 26.0, [14.8], seed=3), "failed_in_first_stage": True},
+            "s3_low": {**summary(0.004, 28.0, [2.8], seed=3, start_tilt=16.0), "failed_in_first_stage": False},
+            "s4": {**summary(0.004, 26.0, [11.4], seed=4), "failed_in_first_stage": True}}
+    assert collect.seed_spread(runs) == ["| ideal 130 kPa R 1–4 mm, safety 0.5 | 1, 2, 3, 4 | 28.0–42.0 | 35.3 ± 7.0 | "
+                                         "1 of 4 (at most 26) | 2.8–17.0 |"]
