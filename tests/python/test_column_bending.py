@@ -5,7 +5,8 @@ spread = load_script("column_bending_spread")
 
 
 def test_the_failure_tilt_is_read_from_what_column_bending_prints():
-    output = ("column 50 x 300 mm, ideal rock, ...\nfirst bond broken (tension, 4.9 mm above the base) at 23.6 deg: ...\n"
+    output = ("column 50 x 300 mm, ideal rock, ...\n"
+              "first bond broken (tension, 4.9 mm above the base) at 23.6 deg: ...\n"
               "failed (top moved 25 mm) at 26.3 deg: beam tension at the base 48.9 kPa (block material: 31.37 kPa)\n")
     assert spread.failure_tilt(output) == 26.3
     assert spread.row("1–4", [27.0, 25.0]) == "| 1–4 | 27.0, 25.0 | 26.0 ± 1.4 |"
