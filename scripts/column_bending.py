@@ -14,6 +14,7 @@ stands when its neighbours fall.
 Names: ``height`` [m] (0.3), ``rate`` [deg/s] (10), or any parameter of the tilting-table example
 (``seed=2``, ``bond_gap=0.735e-3``, ``arrangement=random``, ...), at the example's default otherwise.
 """
+import ast
 import math
 import os
 import sys
@@ -38,6 +39,15 @@ def build_column(model: dict, width: float, height: float) -> list[int]:
     return model["bonded_rock"]([d for d in discs if 0 <= d[0] <= width], ((-1, 0), (1, 0)))
 
 
+def table_cell(value: str) -> str:
+    """``value`` as a table cell holds it: a Python literal (``random`` becomes ``'random'``)."""
+    try:
+        ast.literal_eval(value)
+        return value
+    except (ValueError, SyntaxError):
+        return repr(value)
+
+
 def base_tension(gamma: float, width: float, height: float, tilt_deg: float) -> float:
     a = math.radians(tilt_deg)
     return 3 * gamma * height**2 * math.sin(a) / width - gamma * height * math.cos(a)
@@ -52,9 +62,8 @@ def main() -> None:
     height, rate = float(options.pop("height", 0.3)), float(options.pop("rate", 10.0))
     if rate <= 0 or height <= 0:
         raise ValueError(f"height = {height} m, rate = {rate} deg/s are invalid: both must be > 0")
-    if "arrangement" in options:  # a table cell holds a Python literal
-        options["arrangement"] = repr(options["arrangement"].strip("'\""))
-    model = definitions(rmin=rmin, rmax=rmax, bond_tensile_strength=strength, **options)
+    model = definitions(rmin=rmin, rmax=rmax, bond_tensile_strength=strength,
+                        **{name: table_cell(value) for name, value in options.items()})
     table = model["table"]
     width = model["WIDTH"]
     ids = build_column(model, width, height)
