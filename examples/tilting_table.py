@@ -433,8 +433,10 @@ def analyse() -> dict:
     # over the post-failure run, from the failed stage's end
     moving = [label in top_of and points.rate_since(label, state["stages"][-1]["time"]) > table.rest_speed
               for label in labels]
+    fell_off = [label in top_of and now[top_of[label], 1] < OFF_TABLE for label in labels]
     zones, failure_points = analysis.column_failure(pos_local, disp, column, [top_of.get(label) for label in labels],
-                                                    moving, cracks, band=2 * table.rmax)
+                                                    moving, cracks, band=2 * table.rmax, fell_off=fell_off,
+                                                    least_motion=table.rmin)  # the model's resolution
     planes = analysis.fit_failure_surface(failure_points) if len(failure_points) >= 2 else []
     # horizontal distance (tilted table) from the toe to each column's far top corner; slope height
     far_edges = [k * WIDTH * math.cos(alpha) - layout.heights[k - 1] * math.sin(alpha)

@@ -136,7 +136,8 @@ def zone(top_displacement: float, still_moving: bool, base_displacement: float, 
 
 
 def column_failure(pos: np.ndarray, disp: np.ndarray, column: np.ndarray, tops: Sequence[Optional[int]],
-                   moving: Sequence[bool], cracks: Optional[np.ndarray], band: float
+                   moving: Sequence[bool], cracks: Optional[np.ndarray], band: float,
+                   fell_off: Sequence[bool] = (), least_motion: float = 1e-5
                    ) -> tuple[list[str], list[tuple[float, float]]]:
     """Zones of columns 1..n and the failure points of those toppling or sliding.
 
@@ -145,9 +146,13 @@ def column_failure(pos: np.ndarray, disp: np.ndarray, column: np.ndarray, tops: 
     ``tops[k - 1]`` the index of its top point's disc (None: nothing to judge, zone ``empty``)
     and ``moving[k - 1]`` whether that point still moves. ``band``: the reach of a failure point
     (cracks within it refine it, discs within it are the base that tells sliding from
-    toppling). A top that moved less than 2 % of the farthest-moved top has not moved."""
+    toppling). A top that moved less than 2 % of the farthest-moved top, or less than
+    ``least_motion`` [m] (the model's resolution: elastic creep is not motion), has not moved. A
+    top that fell off the table (``fell_off[k - 1]``) is judged too, but its fall does not set
+    that scale: a metre's drop would make columns moved by centimetres unmoved."""
     top_disp = {k: float(np.linalg.norm(disp[i])) for k, i in enumerate(tops, start=1) if i is not None}
-    still = max(0.02 * max(top_disp.values(), default=0.0), 1e-5)
+    in_slope = [d for k, d in top_disp.items() if not (fell_off and fell_off[k - 1])]
+    still = max(0.02 * max(in_slope, default=0.0), least_motion)
     zones, points = [], []
     for k in range(1, len(tops) + 1):
         if k not in top_disp:

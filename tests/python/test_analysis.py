@@ -144,6 +144,28 @@ def test_column_failure_gives_zones_and_the_failure_points_of_the_failing_column
     assert len(planes) == 1 and planes[0].phi_deg == pytest.approx(15, abs=0.5)
 
 
+def test_a_column_fallen_off_the_table_does_not_make_the_moved_ones_unmoved():
+    """Toe column dropped 0.8 m off the table, the next two toppled 10 mm: 2 % of the fall
+    (16 mm) would call them unmoved; they are toppling, the unmoved ones stay unmoved, and
+    below ``least_motion`` a move does not count."""
+    pos, disp, column = columns_cut_by(lambda x: 0.02, n_columns=5)
+    disp[column >= 4] = 0.0
+    top = [int(np.flatnonzero(column == k)[np.argmax(pos[column == k, 1])]) for k in range(1, 6)]
+    disp[column == 1] = (0.0, -0.8)
+    disp[column == 2] *= 0.010 / np.linalg.norm(disp[top[1]])
+    disp[column == 3] *= 0.010 / np.linalg.norm(disp[top[2]])
+    moving = [True] * 3 + [False] * 2
+    kept, _ = analysis.column_failure(pos, disp, column, top, moving, cracks=None, band=0.008)
+    assert kept == ["sliding"] + ["no-movement"] * 4  # the fall sets the scale
+    zones, points = analysis.column_failure(pos, disp, column, top, moving, cracks=None, band=0.008,
+                                            fell_off=[True] + [False] * 4)
+    assert zones == ["sliding", "toppling", "toppling", "no-movement", "no-movement"]
+    assert [y for _, y in points[1:]] == [pytest.approx(0.02, abs=0.004)] * 2  # one disc spacing
+    coarse, _ = analysis.column_failure(pos, disp, column, top, moving, cracks=None, band=0.008,
+                                        fell_off=[True] + [False] * 4, least_motion=0.015)
+    assert coarse == ["sliding"] + ["no-movement"] * 4  # 10 mm is below the model's resolution
+
+
 def test_column_labels_follow_the_thesis():
     assert [analysis.column_label(k) for k in (1, 7, 15, 26, 27)] == ["A-1", "G-7", "O-15", "Z-26", "AA-27"]
     with pytest.raises(ValueError, match="column"):
