@@ -6,9 +6,10 @@ Prints a Markdown table (pasted into README.md) from every ``<folder>/*/summary.
 the particle-size check (issue 4: failure tilt and phi within 2 deg of the coarser packing of
 the same model): runs that differ only in rmin/rmax, each compared with the next coarser one of
 the same bond gap and with the next coarser one of the same bond density (a gap in proportion to
-the mean radius); a run that stood to its last stage counts as failing above it; and the
-spread of failure tilt (range, mean, standard deviation, seeds within 3 deg of the thesis) and phi
-over packings that differ only in their seed.
+the mean radius); a run that stood to its last stage counts as failing above it; the spread of
+failure tilt (range, mean, standard deviation, seeds within 3 deg of the thesis) and phi over
+packings that differ only in their seed; and the size check on the means over seeds, decided
+only when two standard errors of the difference keep it inside (or outside) the 2 deg.
 """
 import glob
 import json
@@ -150,23 +151,40 @@ def one_per_seed(group: list[dict]) -> list[dict]:
     return sorted(chosen.values(), key=lambda s: numerics(s["inputs"])["seed"])
 
 
+def seed_groups(runs: dict[str, dict]) -> dict[tuple, list[dict]]:
+    """One run per seed (one_per_seed) of each model, packing size, bond gap and numerical
+    setting run with several seeds: key[-5:-3] is (rmin, rmax)."""
+    groups: dict[tuple, list[dict]] = {}
+    for s in runs.values():
+        inputs = s["inputs"]
+        settings = numerics(inputs)
+        key = model_key(inputs) + (inputs["rmin"], inputs["rmax"], bond_gap(inputs), settings["timestep_safety"],
+                                   settings["joint_stiffness_scale"])
+        groups.setdefault(key, []).append(s)
+    return {key: one_per_seed(group) for key, group in groups.items()}
+
+
+def failed_seeds(group: list[dict]) -> list[dict]:
+    """The runs of ``group`` with a failure tilt that is not only an upper bound."""
+    return [s for s in group if s["failure_tilt_deg"] is not None and not first_stage_failure(s)]
+
+
+def group_name(key: tuple) -> str:
+    joints = f", joint stiffness x {key[-1]:g}" if key[-1] != 1 else ""
+    strength = f" {key[1] / 1e3:g} kPa" if key[1] else ""  # 0: Table 5-2's
+    gap = f", bond gap {1e3 * key[-3]:g} mm" if key[-3] != TABLE_BOND_GAP else ""
+    return f"{key[0]}{strength} R {1e3 * key[-5]:g}–{1e3 * key[-4]:g} mm{gap}, safety {key[-2]:g}{joints}"
+
+
 def seed_spread(runs: dict[str, dict]) -> list[str]:
     """Lines giving, for each model, packing size and time step run with several seeds, the
     range, mean and standard deviation of the failure tilt, how many seeds failed within the
     issue's tolerance of the thesis' tilt, and the range of phi (first surface). A seed that
     stood to its last stage, or failed in its first (an upper bound), counts as one outside the
     tolerance and in none of the figures."""
-    groups: dict[tuple, list[dict]] = {}
-    for s in runs.values():
-        inputs = s["inputs"]
-        settings = numerics(inputs)
-        key = model_key(inputs) + (inputs["rmin"], inputs["rmax"], settings["timestep_safety"],
-                                   settings["joint_stiffness_scale"])
-        groups.setdefault(key, []).append(s)
     lines = []
-    for key, group in groups.items():
-        group = one_per_seed(group)
-        failed = [s for s in group if s["failure_tilt_deg"] is not None and not first_stage_failure(s)]
+    for key, group in seed_groups(runs).items():
+        failed = failed_seeds(group)
         if len(group) < 2 or len(failed) < 2:
             continue
         tilts = [s["failure_tilt_deg"] for s in failed]
@@ -175,16 +193,67 @@ def seed_spread(runs: dict[str, dict]) -> list[str]:
         target = group[0]["thesis"]["failure_tilt_deg"]
         inside = sum(abs(t - target) <= TARGET_TOLERANCE_DEG for t in tilts)
         phi_range = f"{min(phis):.1f}–{max(phis):.1f}" if phis else "-"
-        joints = f", joint stiffness x {key[-1]:g}" if key[-1] != 1 else ""
-        strength = f" {key[1] / 1e3:g} kPa" if key[1] else ""  # 0: Table 5-2's
         stood = sum(s["failure_tilt_deg"] is None for s in group)
         bounded = [f"{s['failure_tilt_deg']:g}" for s in group if first_stage_failure(s)]
         others = ([f"{stood} stood"] if stood else []) + ([f"at most {', '.join(bounded)}"] if bounded else [])
         others = f" ({'; '.join(others)})" if others else ""
-        model = f"{key[0]}{strength} R {1e3 * key[-4]:g}–{1e3 * key[-3]:g} mm, safety {key[-2]:g}{joints}"
         spread = f"{statistics.mean(tilts):.1f} ± {statistics.stdev(tilts):.1f}"
-        lines.append(f"| {model} | {seeds} | {min(tilts):.1f}–{max(tilts):.1f} | {spread} | "
+        lines.append(f"| {group_name(key)} | {seeds} | {min(tilts):.1f}–{max(tilts):.1f} | {spread} | "
                      f"{inside} of {len(group)}{others} | {phi_range} |")
+    return lines
+
+
+def mean_difference(fine: list[float], coarse: list[float]) -> tuple[str, str]:
+    """The difference of the means of ``fine`` and ``coarse`` with its standard error, and
+    whether it is within SIZE_TOLERANCE_DEG: yes if it is by two standard errors, no if it is
+    outside by two, undecided otherwise (or with fewer than two values on a side)."""
+    if not fine or not coarse:
+        return "-", "-"
+    d = statistics.mean(fine) - statistics.mean(coarse)
+    if min(len(fine), len(coarse)) < 2:
+        return f"{d:+.1f}", f"undecided ({len(fine)} vs {len(coarse)} seeds)"
+    se = (statistics.variance(fine) / len(fine) + statistics.variance(coarse) / len(coarse)) ** 0.5
+    verdict = "yes" if abs(d) + 2 * se <= SIZE_TOLERANCE_DEG else "no" if abs(d) - 2 * se > SIZE_TOLERANCE_DEG \
+        else "undecided"
+    return f"{d:+.1f} ± {se:.1f}", verdict
+
+
+def stats_text(values: list[float]) -> str:
+    if len(values) < 2:
+        return fmt(values[0]) if values else "-"
+    return f"{statistics.mean(values):.1f} ± {statistics.stdev(values):.1f}"
+
+
+def size_over_seeds(runs: dict[str, dict]) -> list[str]:
+    """The size check on seed means: each packing run with several seeds, or against one that
+    was, compared with the next coarser packing of the same model, bond gap and numerical
+    settings: mean failure tilt and phi (first surface) of the seeds that failed, the difference
+    of the means with its standard error, and the verdict of mean_difference."""
+    groups = seed_groups(runs)
+    lines = []
+    for key, group in groups.items():
+        rest = key[:-5] + key[-3:]
+        coarser = [k for k in groups if k[:-5] + k[-3:] == rest and k[-4] > key[-4]]
+        if not coarser:
+            continue
+        coarse_key = min(coarser, key=lambda k: k[-4])
+        partner = groups[coarse_key]
+        if max(len(group), len(partner)) < 2:
+            continue  # one seed each: size_check's pair
+        sides = [failed_seeds(g) for g in (group, partner)]
+        tilts = [[s["failure_tilt_deg"] for s in side] for side in sides]
+        phis = [[s["phi_deg"][0] for s in side if s["phi_deg"]] for side in sides]
+        cells = []
+        for g, side, t, p in zip((group, partner), sides, tilts, phis):
+            stood = len(g) - len(side)
+            extra = f", {stood} stood or bounded" if stood else ""
+            cells.append(f"{len(side)} of {len(g)}{extra}: {stats_text(t)}, φ {stats_text(p)}")
+        tilt_text, tilt_ok = mean_difference(*tilts)
+        phi_text, phi_ok = mean_difference(*phis)
+        verdict = "yes" if tilt_ok == phi_ok == "yes" else "no" if "no" in (tilt_ok, phi_ok) else tilt_ok
+        lines.append(f"| {group_name(key)} vs R {1e3 * coarse_key[-5]:g}–{1e3 * coarse_key[-4]:g} mm | "
+                     f"{cells[0]} | {cells[1]} | "
+                     f"{tilt_text} | {phi_text} | {verdict} |")
     return lines
 
 
@@ -250,6 +319,14 @@ def main(folder: str) -> None:
               "| φ (°) |")
         print("|---|---|---|---|---|---|")
         print("\n".join(spreads))
+    by_seeds = size_over_seeds(runs)
+    if by_seeds:
+        print(f"\nParticle size over seeds (finer minus next coarser, means of the seeds that failed ± the standard "
+              f"error; within {SIZE_TOLERANCE_DEG:g} deg by two standard errors?):\n")
+        print("| model vs coarser | finer: seeds failed, failure tilt (°), φ (°) | coarser: the same "
+              "| failure tilt (°) | φ (°) | within tolerance |")
+        print("|---|---|---|---|---|---|")
+        print("\n".join(by_seeds))
     softened = joint_stiffness_check(runs)
     if softened:
         print("\nJoint stiffness (softened minus Table 5-3's; time step and wall time: how many times larger / "

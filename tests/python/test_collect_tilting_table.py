@@ -106,3 +106,27 @@ def test_a_first_stage_failure_is_an_upper_bound_and_a_rerun_from_lower_replaces
             "s4": {**summary(0.004, 26.0, [11.4], seed=4), "failed_in_first_stage": True}}
     assert collect.seed_spread(runs) == ["| ideal 130 kPa R 1–4 mm, safety 0.5 | 1, 2, 3, 4 | 28.0–42.0 | 35.3 ± 7.0 | "
                                          "1 of 4 (at most 26) | 2.8–17.0 |"]
+
+
+def seeds(rmax: float, tilts: list, phis: list, **kw) -> dict[str, dict]:
+    return {f"r{rmax}_s{k}": summary(rmax, t, [p], seed=k, **kw) for k, (t, p) in enumerate(zip(tilts, phis), start=1)}
+
+
+def test_the_size_check_over_seeds_is_decided_by_two_standard_errors_of_the_difference_of_means():
+    agree = {**seeds(0.0025, [33.0, 34.0, 35.0], [15.0, 16.0, 14.0]), **seeds(0.004, [34.0, 33.0, 35.0], [15.0, 14.0, 16.0])}
+    assert collect.size_over_seeds(agree) == [
+        "| ideal 130 kPa R 0.625–2.5 mm, safety 0.5 vs R 1–4 mm | 3 of 3: 34.0 ± 1.0, φ 15.0 ± 1.0 "
+        "| 3 of 3: 34.0 ± 1.0, φ 15.0 ± 1.0 | +0.0 ± 0.8 | +0.0 ± 0.8 | yes |"]
+    stronger = {**seeds(0.0025, [42.0, 44.0, 43.0], [15.0, 16.0, 14.0]), **seeds(0.004, [32.0, 34.0, 33.0], [15.0, 14.0, 16.0])}
+    assert collect.size_over_seeds(stronger)[0].endswith("| +10.0 ± 0.8 | +0.0 ± 0.8 | no |")
+    scattered = {**seeds(0.0025, [30.0, 40.0, 35.0], [15.0, 16.0, 14.0]), **seeds(0.004, [34.0, 33.0, 35.0], [15.0, 14.0, 16.0])}
+    assert collect.size_over_seeds(scattered)[0].endswith("| +1.0 ± 2.9 | +0.0 ± 0.8 | undecided |")
+
+
+def test_one_finer_seed_against_several_coarser_is_undecided_and_a_seed_that_stood_is_left_out():
+    runs = {**seeds(0.0025, [42.0], [15.0]), **seeds(0.004, [36.0, 36.0, 40.0, 30.0], [17.0, 12.0, 10.9, 14.4]),
+            "fine_s2": {**summary(0.0025, None, [], seed=2), "stable_up_to_deg": 44.0}}
+    assert collect.size_over_seeds(runs) == [
+        "| ideal 130 kPa R 0.625–2.5 mm, safety 0.5 vs R 1–4 mm | 1 of 2, 1 stood or bounded: 42.0, φ 15.0 "
+        "| 4 of 4: 35.5 ± 4.1, φ 13.6 ± 2.7 | +6.5 | +1.4 | undecided (1 vs 4 seeds) |"]
+    assert collect.size_over_seeds({**seeds(0.0025, [42.0], [15.0]), **seeds(0.004, [36.0], [17.0])}) == []
