@@ -68,7 +68,7 @@ def main() -> None:
     width = model["WIDTH"]
     ids = build_column(model, width, height)
     top = max(ids, key=lambda i: O.bodies[i].state.pos[1])
-    O.run(int(0.2 / O.dt), True)  # settle under gravity on the level base
+    scene.run_steps(int(0.2 / O.dt))  # settle under gravity on the level base
     gamma = sum(O.bodies[i].state.mass for i in ids) * tilting.G / (width * height * model["T"])  # bulk [N/m3]
     reference = tuple(O.bodies[top].state.pos)
     law, tilt, first, broke, start = scene.bond_law(), 0.0, None, False, O.time

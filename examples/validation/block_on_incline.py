@@ -47,7 +47,7 @@ def failed(record):
 
 
 while O.time < table.duration and not (history and failed(history[-1])):
-    O.run(200, True)
+    scene.run_steps(200)
     history.append((O.time, incline.toe_translation(setup, x_start), incline.rotation_deg(setup.block)))
     scene.check_stable()
 

@@ -50,7 +50,7 @@ elif table.load == "bend":
 else:
     if table.compression:  # squeeze the bond to the normal stress `compression` first
         disc.vel = (-table.compression / phys.bondKn / (200 * O.dt), 0, 0)
-        O.run(200, True)
+        scene.run_steps(200)
     strength = table.cohesion + table.compression * math.tan(mat.bondFrictionAngle)
     disc.vel = (0, strength / phys.bondKs / (STEPS_TO_BREAK * O.dt), 0)
 

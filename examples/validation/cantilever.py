@@ -39,7 +39,7 @@ O.forces.setPermF(tip, (0, table.force, 0))
 O.forces.setPermT(tip, (0, 0, table.moment))
 deflection = []
 while True:  # run until the tip stops moving (relative change < 1e-7 over 2000 steps)
-    O.run(2000, True)
+    scene.run_steps(2000)
     deflection.append(O.bodies[tip].state.displ()[1])
     if len(deflection) > 2 and abs(deflection[-1] - deflection[-2]) < 1e-7 * abs(deflection[-1]):
         break

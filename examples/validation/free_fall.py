@@ -44,7 +44,7 @@ def record():
     velocity.append(s.vel[1])
 
 
-O.run(table.steps, True)
+scene.run_steps(table.steps)
 
 # Impact: the first step whose end finds the disc touching; interpolate to zero gap.
 k = next(i for i, h in enumerate(height) if h <= 0)

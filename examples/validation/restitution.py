@@ -29,7 +29,7 @@ O.engines = scene.engines(gravity=(0, 0, 0), timestepper=False)
 m = O.bodies[ball].state.mass
 k = (2 * THICKNESS * table.young) / 2  # two equal disc springs in series
 O.dt = 2 * math.pi * math.sqrt(m / k) / 1000
-O.run(int(4 * 0.01 * table.radius / table.speed / O.dt) + 3000, True)
+scene.run_steps(int(4 * 0.01 * table.radius / table.speed / O.dt) + 3000)
 
 measured = O.bodies[ball].state.vel[1] / table.speed
 reference = math.exp(-math.pi * table.beta / math.sqrt(1 - table.beta**2))

@@ -16,7 +16,7 @@ import math
 from yade import O
 from yade.utils import readParamsFromTable
 
-from toppling import incline, output, tilting
+from toppling import incline, output, scene, tilting
 
 readParamsFromTable(phi=math.degrees(math.atan(0.4)), rmax=0.012, porosity=0.2, step=0.25, stage_time=0.05, seed=1,
                     out="results/tilt_slide", noTableOk=True)
@@ -33,7 +33,7 @@ alpha, slide_tilt, history = table.phi - 4 + table.step, None, []
 while alpha < table.phi + 4 and slide_tilt is None:
     tilting.set_tilt(alpha)
     x0 = O.bodies[setup.toe].state.pos[0]
-    O.run(max(1, int(table.stage_time / O.dt)), True)
+    scene.run_steps(max(1, int(table.stage_time / O.dt)))
     history.append((alpha, incline.toe_translation(setup, x0)))
     if len(history) > 1 and min(m for _, m in history[-2:]) > 1e-4 * B:  # sustained, not a slip event
         slide_tilt = history[-2][0]

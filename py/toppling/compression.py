@@ -49,7 +49,7 @@ def build_specimen(width: float, height: float, rmin: float, rmax: float, porosi
     discs = packing.pack_polygon(region, rmin, rmax, porosity, seed=seed).discs
     ids = scene.add_discs(discs, material)
     O.engines = scene.engines(gravity=(0, 0, 0), local_damping=0.9)
-    O.run(relax_steps, True)
+    scene.run_steps(relax_steps)
     bonds = bonding.bond_within_gap(bond_gap * rmin)
 
     def edge(a, b):
@@ -75,7 +75,7 @@ def compress(spec: Specimen, velocity: float, local_damping: float = 0.0, post_p
     curve, t0 = Curve(), O.time
     width0 = _mean_x(spec.right) - _mean_x(spec.left)
     while True:
-        O.run(steps_per_sample, True)
+        scene.run_steps(steps_per_sample)
         scene.check_stable("the compression test")
         force = sum(O.forces.f(i)[1] for i in spec.top) - sum(O.forces.f(i)[1] for i in spec.bottom)
         curve.axial_strain.append(2 * velocity * (O.time - t0) / spec.height)

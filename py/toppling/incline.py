@@ -62,7 +62,7 @@ def settle(seconds: float, damping: float = 0.5) -> None:
     """Run ``seconds`` with NewtonIntegrator's local damping, then switch it off again."""
     newton = O.engines[-1]
     newton.damping = damping
-    O.run(max(1, int(seconds / O.dt)), True)
+    scene.run_steps(max(1, int(seconds / O.dt)))
     newton.damping = 0.0
 
 

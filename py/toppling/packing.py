@@ -21,6 +21,8 @@ from yade.wrapper import (Bo1_Facet_Aabb, Bo1_Sphere_Aabb, FrictMat, ForceResett
                           InsertionSortCollider, InteractionLoop, Ip2_FrictMat_FrictMat_FrictPhys,
                           Law2_ScGeom_FrictPhys_CundallStrack, NewtonIntegrator, PolygonRegion, Sphere)
 
+from toppling import scene
+
 START_SIZE = 0.6      # discs are placed at this fraction of their radius
 GROWTH_STAGES = 20
 STEPS_PER_STAGE = 100
@@ -163,9 +165,9 @@ def pack_polygon(polygon: PolygonRegion, rmin: float, rmax: float, porosity: flo
             for i, r in zip(ids, radii):
                 O.bodies[i].shape.radius = size * r
             bo1.aabbEnlargeFactor = 1 / size
-            O.run(STEPS_PER_STAGE, True)
+            scene.run_steps(STEPS_PER_STAGE)
         for _ in range(RELAX_ROUNDS):  # relax until the overlaps are well below the limit
-            O.run(RELAX_STEPS, True)
+            scene.run_steps(RELAX_STEPS)
             overlaps = _overlaps()
             if sum(overlaps) / max(1, len(overlaps)) < 0.2 * MAX_MEAN_OVERLAP * rmin:
                 break

@@ -81,7 +81,7 @@ def ramp(from_deg: float, to_deg: float, duration: float, on_chunk: Optional[Cal
     every, last_report = max(1, int(update / O.dt)), O.time
     while O.time - start < duration:
         set_tilt(from_deg + (to_deg - from_deg) * (O.time - start) / duration)
-        O.run(every, True)
+        scene.run_steps(every)
         scene.check_stable(f"the tilt from {from_deg} to {to_deg} deg")
         if on_chunk and O.time - last_report >= 0.02:
             on_chunk()

@@ -40,7 +40,7 @@ def drive(velocity, max_steps=200000):
         if law.breakMode:
             break
         peak = max(peak, O.forces.f(0).norm())
-    O.run(100, True)
+    scene.run_steps(100)
     return peak, law, O.forces.f(0)
 
 

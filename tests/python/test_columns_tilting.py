@@ -77,7 +77,7 @@ def _along_slope_response(load) -> tuple[float, float]:
     start, peak = centre(), 0.0
     load()
     for _ in range(200):
-        O.run(5, True)
+        scene.run_steps(5)
         peak = max(peak, centre() - start)
     incline.settle(0.05)
     return peak, centre() - start
@@ -125,7 +125,7 @@ def test_column_top_points_are_the_discs_nearest_the_tops_and_skip_an_empty_colu
 def test_checkpoint_resumes_scene_and_driver_state(empty_scene, tmp_path):
     setup = incline.build(0.1, 0.05, 0.012 / 2.5, 0.012, ROCK, 20.0)
     points = monitor.MonitoringPoints(["A-1"], [setup.toe])
-    O.run(50, True)
+    scene.run_steps(50)
     points.record()
     checkpoint = monitor.Checkpoint(str(tmp_path))
     assert not checkpoint.exists()
@@ -182,7 +182,7 @@ def test_progress_eta_of_a_phase_of_known_length_is_its_remaining_time_at_the_cu
     progress = monitor.Progress(every=5.0, energy=lambda: 1.25e-3)
     progress("post", remaining_time=0.3)  # no rate yet
     O.dt = 0.01
-    O.run(2, True)  # 0.02 simulated s in 10 wall s: 0.1 s more take 50 s
+    scene.run_steps(2)  # 0.02 simulated s in 10 wall s: 0.1 s more take 50 s
     progress("post", remaining_time=0.1)
     lines = capsys.readouterr().out.splitlines()
     assert lines[0].endswith("ETA ?") and lines[1].endswith("ETA 50 s")

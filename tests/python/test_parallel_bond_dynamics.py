@@ -34,7 +34,7 @@ def test_undamped_lattice_conserves_energy_with_auto_timestep(empty_scene, gap, 
     e0 = leapfrog_energy(law)
     drift = 0.0
     for _ in range(100):
-        O.run(99, True)
+        scene.run_steps(99)
         drift = max(drift, abs(leapfrog_energy(law) - e0) / e0)
     assert O.iter == 10_001
     assert law.countBonds(1) == bonds > 100 and not law.breakMode
@@ -48,14 +48,14 @@ def test_save_load_continues_identically(empty_scene, tmp_path, timestepper):
                          timestepper=timestepper)
     if not timestepper:
         O.dt = 2e-7
-    O.run(200, True)
+    scene.run_steps(200)
     saved = str(tmp_path / "mid.yade.gz")
     O.save(saved)
-    O.run(300, True)
+    scene.run_steps(300)
     reference = [O.bodies[i].state.pos for i in ids]
     reference_breaks = list(scene.bond_law().breakTime)
     O.load(saved)
-    O.run(300, True)
+    scene.run_steps(300)
     assert len(reference_breaks) > 20
     if timestepper:
         # YADE's collider rebuilds its interaction order after O.load, so new contacts are summed
@@ -71,7 +71,7 @@ def test_unstable_run_stops_with_a_message(empty_scene):
     ids = bonded_lattice(4, 4, material(), timestepper=False)
     O.dt = 1e-3  # ~100x the critical time step
     shake(ids)
-    O.run(5000, True)
+    scene.run_steps(5000)
     law = scene.bond_law()
     assert law.unstable
     assert O.iter < 50
@@ -109,7 +109,7 @@ def test_bad_inherited_values_set_later_stop_the_run(empty_scene, attribute, val
     setattr(mat, attribute, value)  # YADE's own setter for ElastMat/FrictMat attributes
     O.interactions.clear()
     O.dt = 1e-7
-    O.run(100, True)
+    scene.run_steps(100)
     assert O.iter < 100
 
 
@@ -120,14 +120,14 @@ def test_bonding_after_settling_is_stress_free_and_limits_the_time_step(empty_sc
     law = scene.bond_law()
     for i in list(O.interactions):  # start unbonded: remove the lattice's bonds
         O.interactions.erase(i.id1, i.id2)
-    O.run(500, True)
+    scene.run_steps(500)
     dt_before = O.dt
     bonds = bonding.bond_within_gap(1e-6 * R)
     assert bonds == law.countBonds(1) > 50
     assert sum(bonding.intact_bonds(b.id) for b in O.bodies) == 2 * bonds
     assert all(i.phys.bondNormalForce == 0 and i.phys.bondMoment == 0 for i in O.interactions if i.phys.bondState == 1)
     assert O.dt <= 0.5 * law.criticalTimeStep() * (1 + 1e-12) < dt_before  # bonds 20x stiffer than contacts
-    O.run(2000, True)
+    scene.run_steps(2000)
     assert not law.unstable and not law.breakMode
 
 
@@ -156,7 +156,7 @@ def test_a_bond_installed_over_an_overlap_takes_the_contact_force_in_tension(emp
     O.engines = scene.engines(gravity=(0, 0, 0), local_damping=0.7)
     O.step()
     assert bonding.bond_within_gap(1e-6 * R, ids) == 1
-    O.run(3000, True)
+    scene.run_steps(3000)
     phys = O.interactions[ids[0], ids[1]].phys
     kb = phys.bondKn * phys.bondArea
     expected = 0.0 if shrink else -phys.contactKn * kb * u / (phys.contactKn + kb)

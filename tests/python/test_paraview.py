@@ -50,7 +50,7 @@ def test_series_of_discs_bonds_and_joints(empty_scene, tmp_path):
     series = paraview.ParaViewSeries(str(tmp_path), system.blockOfBody)
     series.snapshot()
     pull_until_broken(1)
-    O.run(10, True)
+    scene.run_steps(10)
     paths = series.snapshot()
     assert [os.path.basename(p) for p in paths] == ["discs_00001.vtu", "bonds_00001.vtu", "joints_00001.vtu"]
 
@@ -108,7 +108,7 @@ def test_bond_stress_history_reads_the_series_back(empty_scene, tmp_path, capsys
     O.engines = scene.engines(gravity=(0, 0, 0))
     bonding.bond_within_gap(1e-9)
     boundary.move([1], (0, 1e-3))
-    O.run(5, True)  # pulled: the bond carries tension
+    scene.run_steps(5)  # pulled: the bond carries tension
     series = paraview.ParaViewSeries(str(tmp_path / "paraview"))
     series.snapshot()
     sigma = O.interactions[0, 1].phys.bondSigmaMax

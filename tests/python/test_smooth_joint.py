@@ -30,14 +30,14 @@ def block_on_slab(friction_deg: float, smooth: bool = True):
     O.engines = scene.engines(gravity=(0, -G, 0), local_damping=0.5)
     if not smooth:
         bonding.bond_within_gap(1e-6 * R, ids=block)
-        O.run(2000, True)
+        scene.run_steps(2000)
         return block, None
     bonding.bond_within_gap(1e-6 * R)
     joint = JointSetGeometry(origin=(0, Y_JOINT), dip=0)
     mechanics = SmoothJointMat(normalStiffness=rock.bondYoung / (2 * R),
                                shearStiffness=rock.bondYoung / (2 * R), frictionAngle=math.radians(friction_deg))
     system = joints.install_joints([(joint, mechanics)], lo=(-R, -R), hi=(2 * R * COLS, 10 * R * ROWS_BLOCK))
-    O.run(2000, True)  # settle on the joint, damped
+    scene.run_steps(2000)  # settle on the joint, damped
     return block, system
 
 
@@ -56,7 +56,7 @@ def acceleration(ids, steps=4000, samples=40) -> float:
     springs, so a velocity difference between two instants would measure the ringing too."""
     times, xs = [], []
     for _ in range(samples):
-        O.run(steps // samples, True)
+        scene.run_steps(steps // samples)
         times.append(O.time)
         xs.append(mean_x(ids))
     return 2 * numpy.polyfit(times, xs, 2)[0]
@@ -90,14 +90,14 @@ def test_friction_holds_below_and_slides_above_friction_angle(empty_scene, phi):
     block, _ = block_on_slab(friction_deg=phi)
     start = [O.bodies[i].state.pos[0] for i in block]
     tilt(phi - 2)
-    O.run(4000, True)
+    scene.run_steps(4000)
     creep = max(abs(O.bodies[i].state.pos[0] - x) for i, x in zip(block, start))
     assert creep < 0.01 * R  # elastic shear only
     tilt(phi + 4)
     # The sudden tilt is a step load: the block rings on its joint springs for the first few
     # thousand steps, which moves a parabola fitted then by up to 1.5 % either way depending on
     # the settling history alone (measured); the closed form is the sliding that follows.
-    O.run(4000, True)
+    scene.run_steps(4000)
     a = math.radians(phi + 4)
     expected = G * (math.sin(a) - math.tan(math.radians(phi)) * math.cos(a))
     assert acceleration(block) == pytest.approx(expected, rel=0.005)
