@@ -150,6 +150,10 @@ def column_failure(pos: np.ndarray, disp: np.ndarray, column: np.ndarray, tops: 
     ``least_motion`` [m] (the model's resolution: elastic creep is not motion), has not moved. A
     top that fell off the table (``fell_off[k - 1]``) is judged too, but its fall does not set
     that scale: a metre's drop would make columns moved by centimetres unmoved."""
+    if least_motion < 0:
+        raise ValueError(f"least_motion = {least_motion} is invalid: it must be >= 0 m")
+    if fell_off and len(fell_off) != len(tops):
+        raise ValueError(f"fell_off has {len(fell_off)} entries for {len(tops)} columns: give one per column")
     top_disp = {k: float(np.linalg.norm(disp[i])) for k, i in enumerate(tops, start=1) if i is not None}
     in_slope = [d for k, d in top_disp.items() if not (fell_off and fell_off[k - 1])]
     still = max(0.02 * max(in_slope, default=0.0), least_motion)

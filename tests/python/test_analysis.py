@@ -164,6 +164,10 @@ def test_a_column_fallen_off_the_table_does_not_make_the_moved_ones_unmoved():
     coarse, _ = analysis.column_failure(pos, disp, column, top, moving, cracks=None, band=0.008,
                                         fell_off=[True] + [False] * 4, least_motion=0.015)
     assert coarse == ["sliding"] + ["no-movement"] * 4  # 10 mm is below the model's resolution
+    with pytest.raises(ValueError, match="least_motion"):
+        analysis.column_failure(pos, disp, column, top, moving, cracks=None, band=0.008, least_motion=-1.0)
+    with pytest.raises(ValueError, match="fell_off"):
+        analysis.column_failure(pos, disp, column, top, moving, cracks=None, band=0.008, fell_off=[True])
 
 
 def test_column_labels_follow_the_thesis():
