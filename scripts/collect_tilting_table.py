@@ -164,6 +164,11 @@ def seed_groups(runs: dict[str, dict]) -> dict[tuple, list[dict]]:
     return {key: one_per_seed(group) for key, group in groups.items()}
 
 
+def without_size(key: tuple) -> tuple:
+    """A seed group's key without its packing size (rmin, rmax): the model it is a packing of."""
+    return key[:-5] + key[-3:]
+
+
 def failed_seeds(group: list[dict]) -> list[dict]:
     """The runs of ``group`` with a failure tilt that is not only an upper bound."""
     return [s for s in group if s["failure_tilt_deg"] is not None and not first_stage_failure(s)]
@@ -197,8 +202,7 @@ def seed_spread(runs: dict[str, dict]) -> list[str]:
         bounded = [f"{s['failure_tilt_deg']:g}" for s in group if first_stage_failure(s)]
         others = ([f"{stood} stood"] if stood else []) + ([f"at most {', '.join(bounded)}"] if bounded else [])
         others = f" ({'; '.join(others)})" if others else ""
-        spread = f"{statistics.mean(tilts):.1f} ± {statistics.stdev(tilts):.1f}"
-        lines.append(f"| {group_name(key)} | {seeds} | {min(tilts):.1f}–{max(tilts):.1f} | {spread} | "
+        lines.append(f"| {group_name(key)} | {seeds} | {min(tilts):.1f}–{max(tilts):.1f} | {stats_text(tilts)} | "
                      f"{inside} of {len(group)}{others} | {phi_range} |")
     return lines
 
@@ -232,8 +236,7 @@ def size_over_seeds(runs: dict[str, dict]) -> list[str]:
     groups = seed_groups(runs)
     lines = []
     for key, group in groups.items():
-        rest = key[:-5] + key[-3:]
-        coarser = [k for k in groups if k[:-5] + k[-3:] == rest and k[-4] > key[-4]]
+        coarser = [k for k in groups if without_size(k) == without_size(key) and k[-4] > key[-4]]
         if not coarser:
             continue
         coarse_key = min(coarser, key=lambda k: k[-4])

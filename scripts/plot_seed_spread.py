@@ -29,7 +29,7 @@ def sized_groups(runs: dict[str, dict]) -> dict[tuple, dict[tuple, list[dict]]]:
     """Seed groups by model (the key without rmin, rmax), for models with several seeds at a size."""
     by_model: dict[tuple, dict[tuple, list[dict]]] = {}
     for key, group in collect.seed_groups(runs).items():
-        by_model.setdefault(key[:-5] + key[-3:], {})[key] = group
+        by_model.setdefault(collect.without_size(key), {})[key] = group
     return {model: sizes for model, sizes in by_model.items() if max(map(len, sizes.values())) >= 2}
 
 
