@@ -7,7 +7,7 @@
 # copied beside it and renamed over it: a new inode, while running processes keep the old.
 set -euo pipefail
 build=$1 prefix=$2 stage=$3
-DESTDIR="$stage" cmake --install "$build" | grep -v -- '-- Up-to-date:' || true
+DESTDIR="$stage" cmake --install "$build" | { grep -v -- '-- Up-to-date:' || true; }  # a failed install still fails
 cd "$stage$prefix"
 replaced=0
 while IFS= read -r -d '' file; do
