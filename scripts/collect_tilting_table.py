@@ -16,7 +16,7 @@ import json
 import os
 import statistics
 import sys
-from typing import Optional
+from typing import NamedTuple, Optional
 
 
 CALIBRATION = ("bond_tensile_strength", "main_joint_friction", "base_joint_friction")  # 0: the thesis' tables
@@ -151,22 +151,35 @@ def one_per_seed(group: list[dict]) -> list[dict]:
     return sorted(chosen.values(), key=lambda s: numerics(s["inputs"])["seed"])
 
 
-def seed_groups(runs: dict[str, dict]) -> dict[tuple, list[dict]]:
+class SeedGroup(NamedTuple):
+    """What the runs of one seed group share: the model (model_key), packing size, bond gap [m]
+    and numerical settings."""
+    model: tuple
+    rmin: float
+    rmax: float
+    gap: float
+    safety: float
+    joints: float  # joint_stiffness_scale
+
+    def without_size(self) -> "SeedGroup":
+        """The model this group is a packing of."""
+        return self._replace(rmin=None, rmax=None)
+
+    def size_text(self) -> str:
+        return f"R {1e3 * self.rmin:g}–{1e3 * self.rmax:g} mm"
+
+
+def seed_groups(runs: dict[str, dict]) -> dict[SeedGroup, list[dict]]:
     """One run per seed (one_per_seed) of each model, packing size, bond gap and numerical
-    setting run with several seeds: key[-5:-3] is (rmin, rmax)."""
-    groups: dict[tuple, list[dict]] = {}
+    setting run with several seeds."""
+    groups: dict[SeedGroup, list[dict]] = {}
     for s in runs.values():
         inputs = s["inputs"]
         settings = numerics(inputs)
-        key = model_key(inputs) + (inputs["rmin"], inputs["rmax"], bond_gap(inputs), settings["timestep_safety"],
-                                   settings["joint_stiffness_scale"])
+        key = SeedGroup(model_key(inputs), inputs["rmin"], inputs["rmax"], bond_gap(inputs),
+                        settings["timestep_safety"], settings["joint_stiffness_scale"])
         groups.setdefault(key, []).append(s)
     return {key: one_per_seed(group) for key, group in groups.items()}
-
-
-def without_size(key: tuple) -> tuple:
-    """A seed group's key without its packing size (rmin, rmax): the model it is a packing of."""
-    return key[:-5] + key[-3:]
 
 
 def failed_seeds(group: list[dict]) -> list[dict]:
@@ -174,11 +187,11 @@ def failed_seeds(group: list[dict]) -> list[dict]:
     return [s for s in group if s["failure_tilt_deg"] is not None and not first_stage_failure(s)]
 
 
-def group_name(key: tuple) -> str:
-    joints = f", joint stiffness x {key[-1]:g}" if key[-1] != 1 else ""
-    strength = f" {key[1] / 1e3:g} kPa" if key[1] else ""  # 0: Table 5-2's
-    gap = f", bond gap {1e3 * key[-3]:g} mm" if key[-3] != TABLE_BOND_GAP else ""
-    return f"{key[0]}{strength} R {1e3 * key[-5]:g}–{1e3 * key[-4]:g} mm{gap}, safety {key[-2]:g}{joints}"
+def group_name(key: SeedGroup) -> str:
+    joints = f", joint stiffness x {key.joints:g}" if key.joints != 1 else ""
+    strength = f" {key.model[1] / 1e3:g} kPa" if key.model[1] else ""  # 0: Table 5-2's
+    gap = f", bond gap {1e3 * key.gap:g} mm" if key.gap != TABLE_BOND_GAP else ""
+    return f"{key.model[0]}{strength} {key.size_text()}{gap}, safety {key.safety:g}{joints}"
 
 
 def seed_spread(runs: dict[str, dict]) -> list[str]:
@@ -236,10 +249,10 @@ def size_over_seeds(runs: dict[str, dict]) -> list[str]:
     groups = seed_groups(runs)
     lines = []
     for key, group in groups.items():
-        coarser = [k for k in groups if without_size(k) == without_size(key) and k[-4] > key[-4]]
+        coarser = [k for k in groups if k.without_size() == key.without_size() and k.rmax > key.rmax]
         if not coarser:
             continue
-        coarse_key = min(coarser, key=lambda k: k[-4])
+        coarse_key = min(coarser, key=lambda k: k.rmax)
         partner = groups[coarse_key]
         if max(len(group), len(partner)) < 2:
             continue  # one seed each: size_check's pair
@@ -254,7 +267,7 @@ def size_over_seeds(runs: dict[str, dict]) -> list[str]:
         tilt_text, tilt_ok = mean_difference(*tilts)
         phi_text, phi_ok = mean_difference(*phis)
         verdict = "yes" if tilt_ok == phi_ok == "yes" else "no" if "no" in (tilt_ok, phi_ok) else tilt_ok
-        lines.append(f"| {group_name(key)} vs R {1e3 * coarse_key[-5]:g}–{1e3 * coarse_key[-4]:g} mm | "
+        lines.append(f"| {group_name(key)} vs {coarse_key.size_text()} | "
                      f"{cells[0]} | {cells[1]} | "
                      f"{tilt_text} | {phi_text} | {verdict} |")
     return lines

@@ -29,7 +29,7 @@ def sized_groups(runs: dict[str, dict]) -> dict[tuple, dict[tuple, list[dict]]]:
     """Seed groups by model (the key without rmin, rmax), for models with several seeds at a size."""
     by_model: dict[tuple, dict[tuple, list[dict]]] = {}
     for key, group in collect.seed_groups(runs).items():
-        by_model.setdefault(collect.without_size(key), {})[key] = group
+        by_model.setdefault(key.without_size(), {})[key] = group
     return {model: sizes for model, sizes in by_model.items() if max(map(len, sizes.values())) >= 2}
 
 
@@ -41,7 +41,7 @@ def draw(ax, key: tuple, group: list[dict], colour) -> None:
             ax.plot(s["wall_time"], s.get("stable_up_to_deg") or 0.0, "^", color=colour, mfc="none")
         elif collect.first_stage_failure(s):
             ax.plot(s["wall_time"], tilt, "v", color=colour, mfc="none")
-    label = f"R {1e3 * key[-5]:g}–{1e3 * key[-4]:g} mm ({len(failed)} of {len(group)} seeds failed)"
+    label = f"{key.size_text()} ({len(failed)} of {len(group)} seeds failed)"
     ax.plot([s["wall_time"] for s in failed], [s["failure_tilt_deg"] for s in failed], "o", color=colour, label=label)
     if len(failed) >= 2:
         tilts = [s["failure_tilt_deg"] for s in failed]
@@ -59,7 +59,7 @@ def main(folder: str, png: str) -> None:
         target = first["thesis"]["failure_tilt_deg"]
         ax.axhspan(target - collect.TARGET_TOLERANCE_DEG, target + collect.TARGET_TOLERANCE_DEG, color="0.85",
                    label=f"thesis {target}° ± {collect.TARGET_TOLERANCE_DEG:g}°")
-        for (key, group), colour in zip(sorted(sizes.items(), key=lambda kv: -kv[0][-4]), plt.cm.tab10.colors):
+        for (key, group), colour in zip(sorted(sizes.items(), key=lambda kv: -kv[0].rmax), plt.cm.tab10.colors):
             draw(ax, key, group, colour)
         name = collect.group_name(next(iter(sizes)))
         ax.set_title(name.split(" R ")[0] + name.split(" mm", 1)[1], fontsize=9)  # the model without its size
