@@ -266,7 +266,8 @@ def size_over_seeds(runs: dict[str, dict]) -> list[str]:
             cells.append(f"{len(side)} of {len(g)}{extra}: {stats_text(t)}, φ {stats_text(p)}")
         tilt_text, tilt_ok = mean_difference(*tilts)
         phi_text, phi_ok = mean_difference(*phis)
-        verdict = "yes" if tilt_ok == phi_ok == "yes" else "no" if "no" in (tilt_ok, phi_ok) else tilt_ok
+        verdict = ("yes" if tilt_ok == phi_ok == "yes" else "no" if "no" in (tilt_ok, phi_ok)
+                   else phi_ok if tilt_ok == "yes" else tilt_ok)  # an undecided phi leaves it undecided
         lines.append(f"| {group_name(key)} vs {coarse_key.size_text()} | "
                      f"{cells[0]} | {cells[1]} | "
                      f"{tilt_text} | {phi_text} | {verdict} |")

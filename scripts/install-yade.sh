@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Install YADE's build tree into its prefix without rewriting a file a running yade has mapped.
 #   scripts/install-yade.sh <build dir> <prefix> <staging dir>
-# `cmake --install` rewrites a changed library in place (same inode), and a yade process that
-# has it mapped then crashes (a second clone's set-up beside a running simulation did). Here
+# `cmake --install` rewrites a changed library in place (same inode), which can crash a yade
+# process that has it mapped, e.g. a simulation running while a second clone is set up. Here
 # cmake installs into a staging tree, and each file that differs from the installed one is
 # copied beside it and renamed over it: a new inode, while running processes keep the old.
 set -euo pipefail

@@ -130,3 +130,8 @@ def test_one_finer_seed_against_several_coarser_is_undecided_and_a_seed_that_sto
         "| ideal 130 kPa R 0.625–2.5 mm, safety 0.5 vs R 1–4 mm | 1 of 2, 1 stood or bounded: 42.0, φ 15.0 "
         "| 4 of 4: 35.5 ± 4.1, φ 13.6 ± 2.7 | +6.5 | +1.4 | undecided (1 vs 4 seeds) |"]
     assert collect.size_over_seeds({**seeds(0.0025, [42.0], [15.0]), **seeds(0.004, [36.0], [17.0])}) == []
+
+
+def test_a_failure_tilt_within_tolerance_with_an_undecided_phi_is_undecided():
+    runs = {**seeds(0.0025, [33.0, 34.0, 35.0], [5.0, 25.0, 15.0]), **seeds(0.004, [34.0, 33.0, 35.0], [15.0, 14.0, 16.0])}
+    assert collect.size_over_seeds(runs)[0].endswith("| +0.0 ± 0.8 | +0.0 ± 5.8 | undecided |")
