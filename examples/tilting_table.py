@@ -351,11 +351,21 @@ def begin(name: str, start: Optional[float] = None, **extra) -> dict:
     return state["phase"]
 
 
+def stage_line(stage: dict) -> str:
+    """The log line of a finished stage (the ones `grep '^tilt'` and the README quote)."""
+    how = f" by {stage['failed_by']}" if "failed_by" in stage else ""
+    gone = stage.get("gone", [])
+    alone = f"; {', '.join(gone)} toppled off alone" if stage["outcome"] == "equilibrium" and gone else ""
+    return f"tilt {stage['tilt']:.1f} deg: {stage['outcome']}{how} (a column top moved {stage['moved_mm']:.1f} mm{alone})"
+
+
 def run_stage(alpha: float, phase: dict) -> str:
     return tilting.run_stage(alpha, watched, np.array(phase["reference"]), criteria, on_chunk, start=phase["start"])
 
 
 # ---- stand on the level table, tilt slowly to start_tilt, then in stages until a stage fails ----
+for done in state["stages"]:  # a resumed run's log (yade-batch overwrites it) still lists every stage
+    print(stage_line(done), flush=True)
 phase = state.get("phase") or begin("level", reference=tilting.centroids(watched).tolist())
 if phase["name"] == "level":
     if run_stage(0.0, phase) == "failed":
@@ -377,9 +387,7 @@ while state["failure_tilt"] is None and state["tilt"] <= table.max_tilt + 1e-9:
     if outcome == "failed":  # a collapse or a creep: whoever weighs the failure tilt needs to know which
         stage["failed_by"] = "fail_displacement" if off.sum() >= criteria.fail_columns else "max_stage_time"
     state["stages"].append(stage)
-    how = f" by {stage['failed_by']}" if "failed_by" in stage else ""
-    alone = f"; {', '.join(stage['gone'])} toppled off alone" if outcome == "equilibrium" and stage["gone"] else ""
-    print(f"tilt {state['tilt']:.1f} deg: {outcome}{how} (a column top moved {1e3 * moved:.1f} mm{alone})", flush=True)
+    print(stage_line(stage), flush=True)
     series.snapshot()
     if outcome == "failed":
         state["failure_tilt"] = state["tilt"]

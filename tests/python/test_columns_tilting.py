@@ -189,6 +189,19 @@ def test_progress_eta_of_a_phase_of_known_length_is_its_remaining_time_at_the_cu
     assert "Ek = 1.250e-03 J" in lines[0]  # the energy it was given
 
 
+def test_progress_eta_of_a_resumed_run_counts_only_the_work_done_in_this_process(empty_scene, monkeypatch, capsys):
+    """Resumed halfway (the earlier process did half the work): the quarter done in this one took
+    100 s, so the quarter left takes 100 s, not the 20 s that half-done-in-120-s would say."""
+    O.engines = scene.engines(timestepper=False)
+    wall = iter([0.0, 20.0, 120.0])  # Progress() at 0 s, lines at 20 s and 120 s
+    monkeypatch.setattr(monitor.time, "time", lambda: next(wall))
+    progress = monitor.Progress(every=5.0, energy=lambda: 0.0)
+    progress("stage", fraction_done=0.5)
+    progress("stage", fraction_done=0.75)
+    lines = capsys.readouterr().out.splitlines()
+    assert lines[0].endswith("ETA ?") and lines[1].endswith("ETA 100 s")
+
+
 def test_rate_since_is_the_change_of_total_displacement_per_second():
     points = monitor.MonitoringPoints.from_dict({"labels": ["A-1"], "ids": [0], "reference": [(0, 0, 0)],
                                                  "time": [0.0, 1.0, 2.0, 3.0],
