@@ -322,36 +322,28 @@ def main(folder: str) -> None:
           "| tensile / shear breaks | wall time (s) |")
     print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     print("\n".join(rows))
-    checks = size_check(runs)
-    if checks:
-        print(f"\nParticle size (finer minus next coarser packing of the same model, of the same bond gap or the "
-              f"same bond density; within {SIZE_TOLERANCE_DEG:g} deg?):\n")
-        print("| runs | bond gap (mm) | failure tilt (°) | φ (°) | within tolerance |")
-        print("|---|---|---|---|---|")
-        print("\n".join(checks))
-    spreads = seed_spread(runs)
-    if spreads:
-        print("\nPacking seed (range over the seeds of the same model, packing size and time step):\n")
-        print(f"| model | seeds | failure tilt (°) | mean ± sd (°) | within {TARGET_TOLERANCE_DEG:g}° of the thesis "
-              "| φ (°) |")
-        print("|---|---|---|---|---|---|")
-        print("\n".join(spreads))
-    by_seeds = size_over_seeds(runs)
-    if by_seeds:
-        print(f"\nParticle size over seeds (finer minus next coarser, means of the seeds that failed ± the standard "
-              f"error; within {SIZE_TOLERANCE_DEG:g} deg by two standard errors?):\n")
-        print("| model vs coarser | finer: seeds failed, failure tilt (°), φ (°) | coarser: the same "
-              "| failure tilt (°) | φ (°) | within tolerance |")
-        print("|---|---|---|---|---|---|")
-        print("\n".join(by_seeds))
-    softened = joint_stiffness_check(runs)
-    if softened:
-        print("\nJoint stiffness (softened minus Table 5-3's; time step and wall time: how many times larger / "
-              "smaller):\n")
-        print("| runs | joint stiffness x | failure tilt (°) | φ (°) | mean time step | wall time |")
-        print("|---|---|---|---|---|---|")
-        print("\n".join(softened))
+    section(f"Particle size (finer minus next coarser packing of the same model, of the same bond gap or the same "
+            f"bond density; within {SIZE_TOLERANCE_DEG:g} deg?)",
+            ["runs", "bond gap (mm)", "failure tilt (°)", "φ (°)", "within tolerance"], size_check(runs))
+    section("Packing seed (range over the seeds of the same model, packing size and time step)",
+            ["model", "seeds", "failure tilt (°)", "mean ± sd (°)", f"within {TARGET_TOLERANCE_DEG:g}° of the thesis",
+             "φ (°)"], seed_spread(runs))
+    section(f"Particle size over seeds (finer minus next coarser, means of the seeds that failed ± the standard "
+            f"error; within {SIZE_TOLERANCE_DEG:g} deg by two standard errors?)",
+            ["model vs coarser", "finer: seeds failed, failure tilt (°), φ (°)", "coarser: the same",
+             "failure tilt (°)", "φ (°)", "within tolerance"], size_over_seeds(runs))
+    section("Joint stiffness (softened minus Table 5-3's; time step and wall time: how many times larger / smaller)",
+            ["runs", "joint stiffness x", "failure tilt (°)", "φ (°)", "mean time step", "wall time"],
+            joint_stiffness_check(runs))
 
+
+def section(title: str, header: list[str], rows: list[str]) -> None:
+    """A titled markdown table after the main one; nothing when it has no rows."""
+    if rows:
+        print(f"\n{title}:\n")
+        print(f"| {' | '.join(header)} |")
+        print("|" + "---|" * len(header))
+        print("\n".join(rows))
 
 if __name__ == "__main__":
     main(sys.argv[1] if len(sys.argv) > 1 else "results/tilting_table")
