@@ -140,7 +140,7 @@ from toppling import (analysis, bonding, boundary, columns, geometry, joints, mo
                       plots, scene, tilting)
 
 readParamsFromTable(arrangement="ideal", rmin=1e-3, rmax=4e-3, porosity=0.18, seed=1, start_tilt=20.0, step=1.0,
-                    max_tilt=45.0, tilt_rate=50.0, damping=0.7, chunk=0.02, rest_speed=1e-3, fail_displacement=0.05,
+                    max_tilt=45.0, tilt_rate=50.0, damping=0.7, settle_damping=0.7, chunk=0.02, rest_speed=1e-3, fail_displacement=0.05,
                     max_stage_time=2.0, fail_columns=1, post_failure_time=0.3, timestep_safety=0.5,
                     bond_tensile_strength=0.0, main_joint_friction=0.0, base_joint_friction=0.0, shrink_overlaps=1,
                     joint_stiffness_scale=1.0, bond_gap=0.0, resume=-1, checkpoint_every=600.0,
@@ -170,6 +170,8 @@ if not (0 <= table.start_tilt <= table.max_tilt < 90 and table.step > 0 and tabl
                      f"tilt_rate = {table.tilt_rate} are invalid: they need 0 <= start_tilt <= max_tilt < 90 deg, "
                      "step > 0 deg and tilt_rate > 0 deg/s")
 scene.check_safety(table.timestep_safety, "timestep_safety")  # before the out folder is made
+scene.check_damping(table.damping, "damping")
+scene.check_damping(table.settle_damping, "settle_damping")
 if table.shrink_overlaps not in (0, 1):
     raise ValueError(f"shrink_overlaps = {table.shrink_overlaps} is invalid: it must be 0 or 1")
 if not 0 < table.joint_stiffness_scale <= 1:
@@ -277,7 +279,7 @@ FREE = ("resume", "checkpoint_every", "max_tilt", "post_failure_time")  # may ch
 inputs = output.table_inputs(table)
 checkpoint = monitor.Checkpoint(table.out)
 # parameters newer than some checkpoints: the value those runs had
-ADDED = {"shrink_overlaps": 0, "joint_stiffness_scale": 1.0, "fail_columns": 1, "bond_gap": 0.0}
+ADDED = {"shrink_overlaps": 0, "joint_stiffness_scale": 1.0, "fail_columns": 1, "bond_gap": 0.0, "settle_damping": 0.7}
 if checkpoint.continues(inputs, table.resume, free=FREE, added=ADDED):
     state = checkpoint.load()
     print(f"resuming {table.out} in its {state['phase']['name']} phase at {state['tilt']} deg "
@@ -368,10 +370,12 @@ for done in state["stages"]:  # a resumed run's log (yade-batch overwrites it) s
     print(stage_line(done), flush=True)
 phase = state.get("phase") or begin("level", reference=tilting.centroids(watched).tolist())
 if phase["name"] == "level":
+    scene.set_local_damping(table.settle_damping)
     if run_stage(0.0, phase) == "failed":
         raise RuntimeError("the model does not stand on the level table: check the outline and the joints")
     print(f"level table: equilibrium after {O.time - phase['start']:.3f} s", flush=True)
     phase = begin("ramp")
+scene.set_local_damping(table.damping)  # from here on the loading's, also in a resumed run
 if phase["name"] == "ramp":
     tilting.ramp(0.0, table.start_tilt, table.start_tilt / table.tilt_rate, on_chunk, start=phase["start"])
     phase = begin("stage", reference=tilting.centroids(watched).tolist())

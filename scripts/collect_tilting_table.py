@@ -21,7 +21,8 @@ from typing import NamedTuple, Optional
 
 CALIBRATION = ("bond_tensile_strength", "main_joint_friction", "base_joint_friction")  # 0: the thesis' tables
 NUMERICS = {"timestep_safety": 0.5, "seed": 1, "joint_stiffness_scale": 1.0}  # defaults (older summaries lack keys)
-ADDED = {"shrink_overlaps": 0, "fail_columns": 1, "bond_gap": 0.0}  # inputs newer than some summaries: the value those runs had
+# inputs newer than some summaries: the value those runs had
+ADDED = {"shrink_overlaps": 0, "fail_columns": 1, "bond_gap": 0.0, "damping": 0.7, "settle_damping": 0.7}
 RUN_ONLY = ("out", "resume", "checkpoint_every", "max_tilt", "post_failure_time")  # no part of the model
 SIZE_TOLERANCE_DEG = 2.0
 TARGET_TOLERANCE_DEG = 3.0  # issue 4: the thesis' failure tilt +- 3 deg
@@ -187,8 +188,15 @@ def failed_seeds(group: list[dict]) -> list[dict]:
     return [s for s in group if s["failure_tilt_deg"] is not None and not first_stage_failure(s)]
 
 
+def model_inputs(model: tuple) -> dict:
+    """The ADDED inputs (but the bond gap) of a model_key, by name."""
+    return dict(zip([name for name in ADDED if name != "bond_gap"], model[1 + len(CALIBRATION):]))
+
+
 def group_name(key: SeedGroup) -> str:
     joints = f", joint stiffness x {key.joints:g}" if key.joints != 1 else ""
+    damping = model_inputs(key.model)["damping"]
+    joints += f", local damping {damping:g}" if damping != ADDED["damping"] else ""
     strength = f" {key.model[1] / 1e3:g} kPa" if key.model[1] else ""  # 0: Table 5-2's
     gap = f", bond gap {1e3 * key.gap:g} mm" if key.gap != TABLE_BOND_GAP else ""
     return f"{key.model[0]}{strength} {key.size_text()}{gap}, safety {key.safety:g}{joints}"

@@ -52,8 +52,7 @@ def engines(gravity=(0.0, -9.81, 0.0), local_damping: float = 0.0,
     ``local_damping`` is NewtonIntegrator's non-viscous damping (PFC's local damping);
     ``timestepper`` adds GlobalStiffnessTimeStepper, which sees bond stiffness.
     """
-    if not 0 <= local_damping < 1:
-        raise ValueError(f"local_damping = {local_damping} is invalid: it must be in [0, 1)")
+    check_damping(local_damping)
     check_safety(safety)
     loop = [
         ForceResetter(),
@@ -68,6 +67,22 @@ def engines(gravity=(0.0, -9.81, 0.0), local_damping: float = 0.0,
                                                timeStepUpdateInterval=100))
     loop.append(NewtonIntegrator(gravity=gravity, damping=local_damping))
     return loop + list(extra)
+
+
+def check_damping(damping: float, name: str = "local_damping") -> None:
+    """Raise ValueError unless ``damping`` (NewtonIntegrator's local damping, called ``name``
+    where the user set it) is in [0, 1)."""
+    if not 0 <= damping < 1:
+        raise ValueError(f"{name} = {damping} is invalid: it must be in [0, 1)")
+
+
+def set_local_damping(damping: float) -> None:
+    """Set the scene's NewtonIntegrator local damping (e.g. one value to settle, another to load)."""
+    check_damping(damping)
+    newtons = [e for e in O.engines if isinstance(e, NewtonIntegrator)]
+    if not newtons:
+        raise LookupError("no NewtonIntegrator in O.engines; build them with toppling.scene.engines()")
+    newtons[0].damping = damping
 
 
 def check_safety(safety: float, name: str = "safety") -> None:

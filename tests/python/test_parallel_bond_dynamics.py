@@ -162,3 +162,16 @@ def test_a_bond_installed_over_an_overlap_takes_the_contact_force_in_tension(emp
     expected = 0.0 if shrink else -phys.contactKn * kb * u / (phys.contactKn + kb)
     assert phys.bondNormalForce == pytest.approx(expected, rel=1e-3, abs=1e-9 * kb * u)
     assert abs(O.bodies[ids[1]].state.vel[0]) < 1e-9
+
+
+def test_set_local_damping_changes_the_integrators_damping(empty_scene):
+    """A free disc falling from rest under local damping d accelerates at g (1 - d) (YADE's
+    local damping takes d |F| against the velocity): v = g (1 - d) t after the change."""
+    (disc,) = scene.add_discs([(0.0, 0.0, R)], material())
+    O.engines = scene.engines(gravity=(0, -9.81, 0), local_damping=0.7, timestepper=False)
+    O.dt = 1e-4
+    scene.set_local_damping(0.25)
+    scene.run_steps(1000)
+    assert O.bodies[disc].state.vel[1] == pytest.approx(-9.81 * 0.75 * O.time, rel=1e-3)
+    with pytest.raises(ValueError, match=r"local_damping = 1.0 is invalid: it must be in \[0, 1\)"):
+        scene.set_local_damping(1.0)
