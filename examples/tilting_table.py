@@ -66,7 +66,7 @@ Loading: the discs within Rmax of the table are fixed in x and y (§5.2.4.2); gr
 by the tilt (Fig 5-7). The model first comes to rest on the level table, then the tilt rises
 steadily at `tilt_rate` deg/s to `start_tilt` (a tilt switched on at once loads the columns
 dynamically, up to twice their static stress; `start_tilt` 0 skips it), then by `step` degrees
-per stage. Each stage runs in chunks of `chunk` seconds with local damping `damping` until
+per stage. Each stage runs in chunks of `chunk` seconds until
 
 * equilibrium: the fastest column top (the centroid of the bonded discs within 2 Rmax of the
   top: a loose disc rattling is not a column moving) moves slower than `rest_speed`, or
@@ -84,6 +84,16 @@ per stage. Each stage runs in chunks of `chunk` seconds with local damping `damp
   R 2-8 mm and 159 kPa, the toe columns of the ideal model moved more than 5 mm at 36 deg,
   breaking 8 bonds, and were at rest 0.76 s into the stage; with a 5 mm threshold (before) that
   stage counted as the failure.
+
+Damping: the thesis' only damping is viscous, in the contacts and bonds (Table 5-2's critical
+damping ratios 0.13 and 0.2, always on). `damping` adds NewtonIntegrator's local damping while
+the table tilts, `settle_damping` while the model comes to rest on the level table (0.7, a way
+to the initial equilibrium, which the thesis reaches by its own means, §5.2.4.1). Local damping
+takes up to `damping` times the force off every disc, so it also brakes a collapse: measured at
+R 2-8 mm (lines 31, 75-79), the first collapse (32 deg) comes to rest under 0.7 at 120 and
+130 kPa (then failure at 42 deg, or none to 44) and is the failure without it at 110-130 kPa
+alike, and the R 1-2.5 mm slopes at 45-75 kPa with 0.7 crack and come to rest to 42-44 deg
+(docs/tilting_table.md, "Local damping"). Rows from line 73 on use 0, as the thesis.
 
 Time step: GlobalStiffnessTimeStepper's, dt = sqrt(2) `timestep_safety` min sqrt(m/K) over the
 discs (K: the stiffness of their bonds, contacts and joints), updated every 100 steps; Table 5-3's
