@@ -150,7 +150,7 @@ from toppling import (analysis, bonding, boundary, columns, geometry, joints, mo
                       plots, scene, tilting)
 
 readParamsFromTable(arrangement="ideal", rmin=1e-3, rmax=4e-3, porosity=0.18, seed=1, start_tilt=20.0, step=1.0,
-                    max_tilt=45.0, tilt_rate=50.0, damping=0.7, settle_damping=0.7, chunk=0.02, rest_speed=1e-3, fail_displacement=0.05,
+                    max_tilt=45.0, tilt_rate=50.0, damping=0.7, settle_damping=0.7, stage_rate=0.0, chunk=0.02, rest_speed=1e-3, fail_displacement=0.05,
                     max_stage_time=2.0, fail_columns=1, post_failure_time=0.3, timestep_safety=0.5,
                     bond_tensile_strength=0.0, main_joint_friction=0.0, base_joint_friction=0.0, shrink_overlaps=1,
                     joint_stiffness_scale=1.0, bond_gap=0.0, resume=-1, checkpoint_every=600.0,
@@ -182,6 +182,8 @@ if not (0 <= table.start_tilt <= table.max_tilt < 90 and table.step > 0 and tabl
 scene.check_safety(table.timestep_safety, "timestep_safety")  # before the out folder is made
 scene.check_damping(table.damping, "damping")
 scene.check_damping(table.settle_damping, "settle_damping")
+if table.stage_rate < 0:
+    raise ValueError(f"stage_rate = {table.stage_rate} is invalid: it must be 0 (each step at once) or > 0 deg/s")
 if table.shrink_overlaps not in (0, 1):
     raise ValueError(f"shrink_overlaps = {table.shrink_overlaps} is invalid: it must be 0 or 1")
 if not 0 < table.joint_stiffness_scale <= 1:
@@ -289,7 +291,8 @@ FREE = ("resume", "checkpoint_every", "max_tilt", "post_failure_time")  # may ch
 inputs = output.table_inputs(table)
 checkpoint = monitor.Checkpoint(table.out)
 # parameters newer than some checkpoints: the value those runs had
-ADDED = {"shrink_overlaps": 0, "joint_stiffness_scale": 1.0, "fail_columns": 1, "bond_gap": 0.0, "settle_damping": 0.7}
+ADDED = {"shrink_overlaps": 0, "joint_stiffness_scale": 1.0, "fail_columns": 1, "bond_gap": 0.0, "settle_damping": 0.7,
+         "stage_rate": 0.0}
 if checkpoint.continues(inputs, table.resume, free=FREE, added=ADDED):
     state = checkpoint.load()
     print(f"resuming {table.out} in its {state['phase']['name']} phase at {state['tilt']} deg "
@@ -372,6 +375,8 @@ def stage_line(stage: dict) -> str:
 
 
 def run_stage(alpha: float, phase: dict) -> str:
+    if table.stage_rate > 0 and alpha > table.start_tilt:  # the step as a ramp: no dynamic overshoot
+        tilting.ramp(alpha - table.step, alpha, table.step / table.stage_rate, on_chunk, start=phase["start"])
     return tilting.run_stage(alpha, watched, np.array(phase["reference"]), criteria, on_chunk, start=phase["start"])
 
 

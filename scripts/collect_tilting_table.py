@@ -22,7 +22,8 @@ from typing import NamedTuple, Optional
 CALIBRATION = ("bond_tensile_strength", "main_joint_friction", "base_joint_friction")  # 0: the thesis' tables
 NUMERICS = {"timestep_safety": 0.5, "seed": 1, "joint_stiffness_scale": 1.0}  # defaults (older summaries lack keys)
 # inputs newer than some summaries: the value those runs had
-ADDED = {"shrink_overlaps": 0, "fail_columns": 1, "bond_gap": 0.0, "damping": 0.7, "settle_damping": 0.7}
+ADDED = {"shrink_overlaps": 0, "fail_columns": 1, "bond_gap": 0.0, "damping": 0.7, "settle_damping": 0.7,
+         "stage_rate": 0.0}
 RUN_ONLY = ("out", "resume", "checkpoint_every", "max_tilt", "post_failure_time")  # no part of the model
 SIZE_TOLERANCE_DEG = 2.0
 TARGET_TOLERANCE_DEG = 3.0  # issue 4: the thesis' failure tilt +- 3 deg
@@ -195,8 +196,9 @@ def model_inputs(model: tuple) -> dict:
 
 def group_name(key: SeedGroup) -> str:
     joints = f", joint stiffness x {key.joints:g}" if key.joints != 1 else ""
-    damping = model_inputs(key.model)["damping"]
-    joints += f", local damping {damping:g}" if damping != ADDED["damping"] else ""
+    added = model_inputs(key.model)
+    joints += f", local damping {added['damping']:g}" if added["damping"] != ADDED["damping"] else ""
+    joints += f", steps at {added['stage_rate']:g} deg/s" if added["stage_rate"] else ""
     strength = f" {key.model[1] / 1e3:g} kPa" if key.model[1] else ""  # 0: Table 5-2's
     gap = f", bond gap {1e3 * key.gap:g} mm" if key.gap != TABLE_BOND_GAP else ""
     return f"{key.model[0]}{strength} {key.size_text()}{gap}, safety {key.safety:g}{joints}"
