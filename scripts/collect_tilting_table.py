@@ -355,5 +355,6 @@ def section(title: str, header: list[str], rows: list[str]) -> None:
         print("|" + "---|" * len(header))
         print("\n".join(rows))
 
+
 if __name__ == "__main__":
     main(sys.argv[1] if len(sys.argv) > 1 else "results/tilting_table")
