@@ -1,8 +1,9 @@
 """Collect the tilting-table summaries into one comparison table (ours vs thesis Table 5-4).
 
-    python3 scripts/collect_tilting_table.py [results/tilting_table]
+    python3 scripts/collect_tilting_table.py [results/tilting_table [pattern ...]]
 
-Prints a Markdown table (pasted into README.md) from every ``<folder>/*/summary.json``, then
+Prints a Markdown table (pasted into README.md) from every ``<folder>/*/summary.json`` (only the
+runs whose name matches one of the shell-style ``pattern``s, when given), then
 the particle-size check (issue 4: failure tilt and phi within 2 deg of the coarser packing of
 the same model): runs that differ only in rmin/rmax, each compared with the next coarser one of
 the same bond gap and with the next coarser one of the same bond density (a gap in proportion to
@@ -11,12 +12,13 @@ failure tilt (range, mean, standard deviation, seeds within 3 deg of the thesis)
 packings that differ only in their seed; and the size check on the means over seeds, decided
 only when two standard errors of the difference keep it inside (or outside) the 2 deg.
 """
+import fnmatch
 import glob
 import json
 import os
 import statistics
 import sys
-from typing import NamedTuple, Optional
+from typing import NamedTuple, Optional, Sequence
 
 
 CALIBRATION = ("bond_tensile_strength", "main_joint_friction", "base_joint_friction")  # 0: the thesis' tables
@@ -38,12 +40,14 @@ def fmt(value, digits=1):
     return f"{value:.{digits}f}"
 
 
-def load(folder: str) -> dict[str, dict]:
-    """Summaries by run name (the out folder's name)."""
+def load(folder: str, patterns: Sequence[str] = ("*",)) -> dict[str, dict]:
+    """Summaries by run name (the out folder's name), of the runs whose name matches a pattern."""
     runs = {}
     for path in sorted(glob.glob(os.path.join(folder, "*", "summary.json"))):
-        with open(path) as f:
-            runs[os.path.basename(os.path.dirname(path))] = json.load(f)
+        name = os.path.basename(os.path.dirname(path))
+        if any(fnmatch.fnmatchcase(name, pattern) for pattern in patterns):
+            with open(path) as f:
+                runs[name] = json.load(f)
     return runs
 
 
@@ -307,8 +311,8 @@ def joint_stiffness_check(runs: dict[str, dict]) -> list[str]:
     return lines
 
 
-def main(folder: str) -> None:
-    runs = load(folder)
+def main(folder: str, patterns: Sequence[str] = ("*",)) -> None:
+    runs = load(folder, patterns)
     rows = []
     for name, s in runs.items():
         inputs = s["inputs"]
@@ -327,7 +331,8 @@ def main(folder: str) -> None:
                     f"{fmt(s['thesis']['phi_deg'])} | {fmt(s['s_over_h'], 2)} | {fmt(s['t_over_h'], 2)} | "
                     f"{s['tensile_breaks']} / {s['shear_breaks']} | {s['wall_time']:.0f} |")
     if not rows:
-        sys.exit(f"no {folder}/*/summary.json: run the tilting_table batch first (see README)")
+        sys.exit(f"no {folder}/*/summary.json matching {' '.join(patterns)}: run the tilting_table batch first "
+                 "(see README)")
     print("| run | arrangement | parameters | R (mm) | discs | last equilibrium (°) | failure tilt (°) | thesis (°) | φ (°) | thesis φ (°) | S/H | T/H "
           "| tensile / shear breaks | wall time (s) |")
     print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
@@ -357,4 +362,4 @@ def section(title: str, header: list[str], rows: list[str]) -> None:
 
 
 if __name__ == "__main__":
-    main(sys.argv[1] if len(sys.argv) > 1 else "results/tilting_table")
+    main(sys.argv[1] if len(sys.argv) > 1 else "results/tilting_table", sys.argv[2:] or ("*",))

@@ -99,6 +99,15 @@ def test_a_failure_by_the_stage_time_limit_is_marked_in_the_table(tmp_path, caps
     assert row.startswith("| random_step1 | random |") and "| 20.0 | 21.0 (time limit) | 19.0 | 31.7 | 14.0, 24.0 |" in row
 
 
+def test_patterns_keep_only_the_runs_they_name(tmp_path):
+    for name in ("ideal_fine", "ideal_coarse", "random_coarse"):
+        (tmp_path / name).mkdir()
+        (tmp_path / name / "summary.json").write_text(json.dumps(summary(0.004, 30.0, [15.0])))
+    assert sorted(collect.load(str(tmp_path), ["*_coarse", "ideal_f*"])) == ["ideal_coarse", "ideal_fine", "random_coarse"]
+    assert list(collect.load(str(tmp_path), ["random_*"])) == ["random_coarse"]
+    assert len(collect.load(str(tmp_path))) == 3
+
+
 def test_a_first_stage_failure_is_an_upper_bound_and_a_rerun_from_lower_replaces_it():
     runs = {"s1": summary(0.004, 36.0, [17.0]), "s2": summary(0.004, 42.0, [14.6], seed=2),
             "s3": {**summary(0.004, 26.0, [14.8], seed=3), "failed_in_first_stage": True},
