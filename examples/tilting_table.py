@@ -94,9 +94,10 @@ takes up to `damping` times the force off every disc, so it also brakes a collap
 R 2-8 mm (lines 31, 75-79), the first collapse (32 deg) comes to rest under 0.7 at 120 and
 130 kPa (then failure at 42 deg, or none to 44) and is the failure without it at 110-130 kPa
 alike, and the R 1-2.5 mm slopes at 45-75 kPa with 0.7 crack and come to rest to 42-44 deg
-(docs/tilting_table.md, "Local damping"). Lines 73-75, 77, 79-85 use 0, as the thesis. Without
-local damping a step of the tilt applied at once overshoots its static load (see Loading), so
-those lines' later ones ramp it (`stage_rate`).
+(docs/tilting_table.md, "Local damping"). `damping` is 0 by default, as in the thesis (lines
+1-72 of the table used 0.7; 73-75, 77 and 79 onwards 0). Without local damping a step of the
+tilt applied at once overshoots its static load (see Loading), so each step is ramped by
+default (`stage_rate` 10 deg/s; lines 1-81 stepped at once).
 
 Time step: GlobalStiffnessTimeStepper's, dt = sqrt(2) `timestep_safety` min sqrt(m/K) over the
 discs (K: the stiffness of their bonds, contacts and joints), updated every 100 steps; Table 5-3's
@@ -153,7 +154,7 @@ from toppling import (analysis, bonding, boundary, columns, geometry, joints, mo
                       plots, scene, tilting)
 
 readParamsFromTable(arrangement="ideal", rmin=1e-3, rmax=4e-3, porosity=0.18, seed=1, start_tilt=20.0, step=1.0,
-                    max_tilt=45.0, tilt_rate=50.0, stage_rate=0.0, damping=0.7, settle_damping=0.7, chunk=0.02,
+                    max_tilt=45.0, tilt_rate=50.0, stage_rate=10.0, damping=0.0, settle_damping=0.7, chunk=0.02,
                     rest_speed=1e-3, fail_displacement=0.05,
                     max_stage_time=2.0, fail_columns=1, post_failure_time=0.3, timestep_safety=0.5,
                     bond_tensile_strength=0.0, main_joint_friction=0.0, base_joint_friction=0.0, shrink_overlaps=1,
