@@ -51,10 +51,11 @@ def load(folder: str, patterns: Sequence[str] = ("*",)) -> dict[str, dict]:
     return runs
 
 
-def model_key(inputs: dict) -> tuple:
-    """What defines the model apart from the particle size and the bond gap."""
-    return ((inputs["arrangement"],) + tuple(inputs.get(name) for name in CALIBRATION)
-            + tuple(inputs.get(name, value) for name, value in ADDED.items() if name != "bond_gap"))
+def model_key(inputs: dict) -> tuple[tuple[str, object], ...]:
+    """What defines the model apart from the particle size and the bond gap, as (input, value)
+    pairs: hashable, and ``dict(key)`` gives them back by name."""
+    names = ("arrangement",) + CALIBRATION + tuple(name for name in ADDED if name != "bond_gap")
+    return tuple((name, inputs.get(name, ADDED.get(name))) for name in names)
 
 
 def bond_gap(inputs: dict) -> float:
@@ -193,19 +194,14 @@ def failed_seeds(group: list[dict]) -> list[dict]:
     return [s for s in group if s["failure_tilt_deg"] is not None and not first_stage_failure(s)]
 
 
-def model_inputs(model: tuple) -> dict:
-    """The ADDED inputs (but the bond gap) of a model_key, by name."""
-    return dict(zip([name for name in ADDED if name != "bond_gap"], model[1 + len(CALIBRATION):]))
-
-
 def group_name(key: SeedGroup) -> str:
     joints = f", joint stiffness x {key.joints:g}" if key.joints != 1 else ""
-    added = model_inputs(key.model)
-    joints += f", local damping {added['damping']:g}" if added["damping"] != ADDED["damping"] else ""
-    joints += f", steps at {added['stage_rate']:g} deg/s" if added["stage_rate"] else ""
-    strength = f" {key.model[1] / 1e3:g} kPa" if key.model[1] else ""  # 0: Table 5-2's
+    model = dict(key.model)
+    joints += f", local damping {model['damping']:g}" if model["damping"] != ADDED["damping"] else ""
+    joints += f", steps at {model['stage_rate']:g} deg/s" if model["stage_rate"] else ""
+    strength = f" {model['bond_tensile_strength'] / 1e3:g} kPa" if model["bond_tensile_strength"] else ""  # 0: Table 5-2's
     gap = f", bond gap {1e3 * key.gap:g} mm" if key.gap != TABLE_BOND_GAP else ""
-    return f"{key.model[0]}{strength} {key.size_text()}{gap}, safety {key.safety:g}{joints}"
+    return f"{model['arrangement']}{strength} {key.size_text()}{gap}, safety {key.safety:g}{joints}"
 
 
 def seed_spread(runs: dict[str, dict]) -> list[str]:
