@@ -199,7 +199,8 @@ def group_name(key: SeedGroup) -> str:
     model = dict(key.model)
     joints += f", local damping {model['damping']:g}" if model["damping"] != ADDED["damping"] else ""
     joints += f", steps at {model['stage_rate']:g} deg/s" if model["stage_rate"] else ""
-    strength = f" {model['bond_tensile_strength'] / 1e3:g} kPa" if model["bond_tensile_strength"] else ""  # 0: Table 5-2's
+    strength = model["bond_tensile_strength"]  # 0: Table 5-2's
+    strength = f" {strength / 1e3:g} kPa" if strength else ""
     gap = f", bond gap {1e3 * key.gap:g} mm" if key.gap != TABLE_BOND_GAP else ""
     return f"{model['arrangement']}{strength} {key.size_text()}{gap}, safety {key.safety:g}{joints}"
 
