@@ -30,8 +30,9 @@ surface y = 0, columns standing along +y, the toe at the right, the slope to the
   blocky columns standing on the table fail at 36 deg along a surface at 36 deg; joints every
   10 cm above the base joint (stacked blocks) let the top blocks topple on their own, failure
   points at the upper joints (phi 45 deg). Random arrangement: blocks 10 cm long stacked in
-  every column with a random (seeded) offset. Cross joints only where the piece above leans on
-  the downhill neighbour column over at least a quarter of a block (so none in the toe
+  every column with a random offset (seeded by `layout_seed`, apart from the packing's `seed`:
+  the thesis has one random arrangement, packed once). Cross joints only where the piece above
+  leans on the downhill neighbour column over at least a quarter of a block (so none in the toe
   column), and none that leaves a top piece shorter than half a block: a block free of its
   neighbour, touching it at a corner, or a thin sliver on a mu 0.23 joint slides off at 13 deg
   plus what the main joints' friction holds, long before the slope topples (measured: the top
@@ -155,7 +156,8 @@ from yade.wrapper import ParallelBondMat, SmoothJointMat
 from toppling import (analysis, bonding, boundary, columns, geometry, joints, monitor, output, packing, paraview,
                       plots, scene, tilting)
 
-readParamsFromTable(arrangement="ideal", rmin=1e-3, rmax=4e-3, porosity=0.18, seed=1, start_tilt=20.0, step=1.0,
+readParamsFromTable(arrangement="ideal", rmin=1e-3, rmax=4e-3, porosity=0.18, seed=1, layout_seed=1, start_tilt=20.0,
+                    step=1.0,
                     max_tilt=45.0, tilt_rate=50.0, stage_rate=10.0, damping=0.0, settle_damping=0.7, chunk=0.02,
                     rest_speed=1e-3, fail_displacement=0.05,
                     max_stage_time=2.0, fail_columns=1, post_failure_time=0.3, timestep_safety=0.5,
@@ -191,6 +193,8 @@ scene.check_damping(table.damping, "damping")
 scene.check_damping(table.settle_damping, "settle_damping")
 if table.stage_rate < 0:
     raise ValueError(f"stage_rate = {table.stage_rate} is invalid: it must be 0 (each step at once) or > 0 deg/s")
+if table.layout_seed != int(table.layout_seed) or table.layout_seed < 0:
+    raise ValueError(f"layout_seed = {table.layout_seed} is invalid: it must be an integer >= 0")
 if table.shrink_overlaps not in (0, 1):
     raise ValueError(f"shrink_overlaps = {table.shrink_overlaps} is invalid: it must be 0 or 1")
 if not 0 < table.joint_stiffness_scale <= 1:
@@ -231,7 +235,7 @@ def cross_joint_heights(layout: columns.ColumnLayout) -> dict[int, list[float]]:
     if table.arrangement == "ideal":  # one base joint per blocky column, on the design plane
         plane = math.tan(math.radians(DESIGN_PLANE_DEG))
         return {k: [plane * (k - 0.5) * WIDTH] for k in range(1, layout.count + 1, 2)}
-    phases = np.random.default_rng(table.seed).uniform(0, BLOCK_LENGTH, layout.count)
+    phases = np.random.default_rng(table.layout_seed).uniform(0, BLOCK_LENGTH, layout.count)
     return {k: layout.stacked_blocks(k, BLOCK_LENGTH, phases[k - 1]) for k in range(1, layout.count + 1)}
 
 
@@ -299,7 +303,7 @@ inputs = output.table_inputs(table)
 checkpoint = monitor.Checkpoint(table.out)
 # parameters newer than some checkpoints: the value those runs had
 ADDED = {"shrink_overlaps": 0, "joint_stiffness_scale": 1.0, "fail_columns": 1, "bond_gap": 0.0, "settle_damping": 0.7,
-         "stage_rate": 0.0}
+         "stage_rate": 0.0, "layout_seed": 1}
 if checkpoint.continues(inputs, table.resume, free=FREE, added=ADDED):
     state = checkpoint.load()
     print(f"resuming {table.out} in its {state['phase']['name']} phase at {state['tilt']} deg "
