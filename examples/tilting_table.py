@@ -79,8 +79,12 @@ chunks of `chunk` seconds until
   needs a few, but blocks settling onto their neighbours creep for longer: measured at R 2-8
   mm, the random model at 15 deg came to rest 0.7 s into the stage, after a 0.6 s limit had
   called it failed, and at 19 deg about 1.5 s into it, after a 1 s limit had called it failed:
-  continued, its kinetic energy fell below 1e-9 J), or `fail_columns` column tops have moved more
-  than `fail_displacement` (one column width: toppled off their neighbours, no need to wait).
+  continued, its kinetic energy fell below 1e-9 J) and has moved further than `rest_speed`
+  times the stage's time (less is a column ringing in place, which without local damping can
+  go on for seconds: the random model at R 2-8 mm, packing seed 3, "failed" at 17 deg by the
+  time limit with its toe column 0.6 mm from where the stage began), or `fail_columns` column
+  tops have moved more than `fail_displacement` (one column width: toppled off their
+  neighbours, no need to wait).
   With `fail_columns` 2 a column that topples off alone (at R 1-4 mm the toe column A-1, 2.7 cm
   high, once its root has cracked: the rest of the slope came to rest behind it, and the analysis
   finds no surface) is gone: the stage's log line and `gone` key name it, and the others decide

@@ -46,7 +46,9 @@ class StageCriteria:
     chunk: float = 0.02  # simulated seconds between checks
     rest_speed: float = 1e-3  # [m/s] fastest watched disc slower than this: equilibrium
     fail_displacement: float = 5e-3  # [m] a watched disc moved more since the last equilibrium: failed
-    max_stage_time: float = 0.4  # [s] still moving faster than rest_speed after this: failed (creep)
+    # [s] still moving faster than rest_speed after this, and moved further than rest_speed times
+    # the stage's time: failed (creep); a group that moved less is ringing in place (no local damping)
+    max_stage_time: float = 0.4
     # how many watched groups must pass fail_displacement for the stage to fail; fewer are gone
     # (a toe column toppled off the table on its own) and no longer judged for rest
     fail_columns: int = 1
@@ -94,13 +96,33 @@ def centroids(groups: Sequence[Sequence[int]]) -> np.ndarray:
     return np.array([positions(group).mean(axis=0) for group in groups])
 
 
+def stage_outcome(now: np.ndarray, before: np.ndarray, reference: np.ndarray, elapsed: float,
+                  criteria: StageCriteria) -> Optional[str]:
+    """The stage's outcome from the watched centroids ``now``, one chunk ago (``before``) and at
+    the stage's start (``reference``), ``elapsed`` seconds into it; None while it is undecided.
+    At the time limit a group still moving but whose mean speed over the stage is below
+    rest_speed vibrates in place (without local damping a column can ring for seconds): that is
+    equilibrium, not creep."""
+    off = gone(now, reference, criteria)
+    if off.sum() >= criteria.fail_columns:
+        return "failed"
+    speed = np.linalg.norm(now - before, axis=1)[~off].max(initial=0.0) / criteria.chunk
+    if speed < criteria.rest_speed:
+        return "equilibrium"
+    if elapsed > criteria.max_stage_time:
+        drift = np.linalg.norm(now - reference, axis=1)[~off].max(initial=0.0) / elapsed
+        return "failed" if drift >= criteria.rest_speed else "equilibrium"
+    return None
+
+
 def run_stage(alpha_deg: float, watched: Sequence[Sequence[int]], reference: np.ndarray, criteria: StageCriteria,
               on_chunk: Optional[Callable[[], None]] = None, start: Optional[float] = None) -> str:
     """Tilt to ``alpha_deg`` and run until ``'equilibrium'`` or ``'failed'`` (see
     StageCriteria), judged on the centroids of the ``watched`` groups of discs (one loose disc
     rattling must not count as a column moving) against their ``reference`` positions:
     failed when ``fail_columns`` groups have moved more than ``fail_displacement``, or when the
-    others still move faster than ``rest_speed`` after ``max_stage_time``.
+    others still move faster than ``rest_speed`` after ``max_stage_time`` and have moved
+    further than ``rest_speed`` times the stage's time (stage_outcome).
     ``start``: the simulated time the stage began (now by default; a resumed run passes the
     checkpointed one, so max_stage_time counts the whole stage)."""
     if criteria.fail_columns > len(watched):
@@ -111,14 +133,9 @@ def run_stage(alpha_deg: float, watched: Sequence[Sequence[int]], reference: np.
     while True:
         scene.run_checked(criteria.chunk, f"the stage at {alpha_deg} deg")
         now = centroids(watched)
-        off = gone(now, reference, criteria)
-        speed = np.linalg.norm(now - before, axis=1)[~off].max(initial=0.0) / criteria.chunk
+        outcome = stage_outcome(now, before, reference, O.time - start, criteria)
         before = now
         if on_chunk:
             on_chunk()
-        if off.sum() >= criteria.fail_columns:
-            return "failed"
-        if speed < criteria.rest_speed:
-            return "equilibrium"
-        if O.time - start > criteria.max_stage_time:
-            return "failed"
+        if outcome:
+            return outcome

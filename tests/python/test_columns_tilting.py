@@ -95,6 +95,30 @@ def test_ramped_tilt_loads_statically_and_a_sudden_tilt_twice(empty_scene):
     assert jump_peak / static == pytest.approx(2.0, abs=0.15)
 
 
+@pytest.mark.parametrize("moved_mm, elapsed, expected", [(0.6, 2.1, "equilibrium"), (2.3, 2.1, "failed"),
+                                                        (0.6, 1.9, None)])
+def test_at_the_time_limit_a_group_ringing_in_place_is_at_rest_and_one_creeping_fails(moved_mm, elapsed, expected):
+    """Two groups, one at rest; the other moves 0.05 mm per 0.02 s chunk (2.5 mm/s, above
+    rest_speed 1 mm/s) and is ``moved_mm`` from where the stage began: after the 2 s limit
+    it creeps if its mean speed over the stage (moved / elapsed) is above rest_speed, and rings
+    in place if below; before the limit the stage goes on."""
+    criteria = tilting.StageCriteria(chunk=0.02, rest_speed=1e-3, fail_displacement=0.05, max_stage_time=2.0)
+    reference = tilting.np.zeros((2, 2))
+    now = tilting.np.array([[0.0, 0.0], [1e-3 * moved_mm, 0.0]])
+    before = now - [[0.0, 0.0], [0.0, 5e-5]]
+    assert tilting.stage_outcome(now, before, reference, elapsed, criteria) == expected
+
+
+def test_a_stage_ends_at_rest_or_when_enough_groups_are_gone_whatever_the_time():
+    criteria = tilting.StageCriteria(chunk=0.02, rest_speed=1e-3, fail_displacement=0.05, max_stage_time=2.0,
+                                     fail_columns=2)
+    reference = tilting.np.zeros((3, 2))
+    one_gone = tilting.np.array([[0.0, 0.0], [0.0, 0.0], [0.08, 0.0]])
+    assert tilting.stage_outcome(one_gone, one_gone, reference, 0.1, criteria) == "equilibrium"  # the rest at rest
+    two_gone = tilting.np.array([[0.06, 0.0], [0.0, 0.0], [0.08, 0.0]])
+    assert tilting.stage_outcome(two_gone, one_gone, reference, 0.1, criteria) == "failed"
+
+
 def test_resumed_ramp_and_stage_continue_from_their_start(empty_scene):
     """A run resumed from a checkpoint in the middle of a ramp or a stage passes the time the
     ramp or stage began: the ramp goes on from where it was, the stage's time limit counts."""
@@ -108,7 +132,8 @@ def test_resumed_ramp_and_stage_continue_from_their_start(empty_scene):
     criteria = tilting.StageCriteria(chunk=0.01, rest_speed=1e-3, fail_displacement=1.0, max_stage_time=0.3)
     resumed_at = O.time
     watched = [setup.block]
-    assert tilting.run_stage(27.0, watched, tilting.centroids(watched), criteria, start=O.time - 0.3) == "failed"
+    began_at = tilting.centroids(watched) - [0.01, 0.0]  # the block slid 1 cm since the stage began
+    assert tilting.run_stage(27.0, watched, began_at, criteria, start=O.time - 0.3) == "failed"
     assert O.time - resumed_at == pytest.approx(criteria.chunk, rel=0.05)
 
 
