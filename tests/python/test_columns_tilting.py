@@ -2,6 +2,7 @@
 import json
 import math
 
+import numpy as np
 import pytest
 from yade import O, utils
 from yade.wrapper import ParallelBondMat
@@ -103,8 +104,8 @@ def test_at_the_time_limit_a_group_ringing_in_place_is_at_rest_and_one_creeping_
     it creeps if its mean speed over the stage (moved / elapsed) is above rest_speed, and rings
     in place if below; before the limit the stage goes on."""
     criteria = tilting.StageCriteria(chunk=0.02, rest_speed=1e-3, fail_displacement=0.05, max_stage_time=2.0)
-    reference = tilting.np.zeros((2, 2))
-    now = tilting.np.array([[0.0, 0.0], [1e-3 * moved_mm, 0.0]])
+    reference = np.zeros((2, 2))
+    now = np.array([[0.0, 0.0], [1e-3 * moved_mm, 0.0]])
     before = now - [[0.0, 0.0], [0.0, 5e-5]]
     assert tilting.stage_outcome(now, before, reference, elapsed, criteria) == expected
 
@@ -112,10 +113,10 @@ def test_at_the_time_limit_a_group_ringing_in_place_is_at_rest_and_one_creeping_
 def test_a_stage_ends_at_rest_or_when_enough_groups_are_gone_whatever_the_time():
     criteria = tilting.StageCriteria(chunk=0.02, rest_speed=1e-3, fail_displacement=0.05, max_stage_time=2.0,
                                      fail_columns=2)
-    reference = tilting.np.zeros((3, 2))
-    one_gone = tilting.np.array([[0.0, 0.0], [0.0, 0.0], [0.08, 0.0]])
+    reference = np.zeros((3, 2))
+    one_gone = np.array([[0.0, 0.0], [0.0, 0.0], [0.08, 0.0]])
     assert tilting.stage_outcome(one_gone, one_gone, reference, 0.1, criteria) == "equilibrium"  # the rest at rest
-    two_gone = tilting.np.array([[0.06, 0.0], [0.0, 0.0], [0.08, 0.0]])
+    two_gone = np.array([[0.06, 0.0], [0.0, 0.0], [0.08, 0.0]])
     assert tilting.stage_outcome(two_gone, one_gone, reference, 0.1, criteria) == "failed"
 
 
@@ -194,7 +195,7 @@ def test_bad_stage_criteria_are_refused():
     with pytest.raises(ValueError, match="fail_columns"):
         tilting.StageCriteria(fail_columns=1.5)
     with pytest.raises(ValueError, match=r"number of watched groups \(1\)"):
-        tilting.run_stage(10.0, [[0]], tilting.np.zeros((1, 2)), tilting.StageCriteria(fail_columns=2))
+        tilting.run_stage(10.0, [[0]], np.zeros((1, 2)), tilting.StageCriteria(fail_columns=2))
     with pytest.raises(ValueError, match="duration"):
         tilting.ramp(0.0, 10.0, 0.0)
 
