@@ -108,6 +108,13 @@ def test_patterns_keep_only_the_runs_they_name(tmp_path):
     assert len(collect.load(str(tmp_path))) == 3
 
 
+def test_a_finer_packing_is_compared_with_the_rerun_of_a_coarse_first_stage_failure():
+    runs = {"coarse": {**summary(0.004, 26.0, [17.9], seed=2), "failed_in_first_stage": True},
+            "coarse_low": {**summary(0.004, 24.0, [15.3], seed=2, start_tilt=20.0), "failed_in_first_stage": False},
+            "fine": summary(0.0025, 34.0, [15.1], seed=2)}
+    assert collect.size_check(runs) == ["| fine vs coarse_low | 1.05 vs 1.05 | +10.0 | -0.2 | no |"]
+
+
 def test_a_first_stage_failure_is_an_upper_bound_and_a_rerun_from_lower_replaces_it():
     runs = {"s1": summary(0.004, 36.0, [17.0]), "s2": summary(0.004, 42.0, [14.6], seed=2),
             "s3": {**summary(0.004, 26.0, [14.8], seed=3), "failed_in_first_stage": True},
