@@ -161,11 +161,10 @@ from yade.wrapper import ParallelBondMat, SmoothJointMat
 from toppling import (analysis, bonding, boundary, columns, geometry, joints, monitor, output, packing, paraview,
                       plots, scene, tilting)
 
-readParamsFromTable(arrangement="ideal", rmin=1e-3, rmax=4e-3, porosity=0.18, seed=1, layout_seed=1, start_tilt=20.0,
-                    step=1.0,
-                    max_tilt=45.0, tilt_rate=50.0, stage_rate=10.0, damping=0.0, settle_damping=0.7, chunk=0.02,
-                    rest_speed=1e-3, fail_displacement=0.05,
-                    max_stage_time=2.0, fail_columns=1, post_failure_time=0.3, timestep_safety=0.5,
+readParamsFromTable(arrangement="ideal", rmin=1e-3, rmax=4e-3, porosity=0.18, seed=1, layout_seed=1,
+                    start_tilt=20.0, step=1.0, max_tilt=45.0, tilt_rate=50.0, stage_rate=10.0, damping=0.0,
+                    settle_damping=0.7, chunk=0.02, rest_speed=1e-3, fail_displacement=0.05, max_stage_time=2.0,
+                    fail_columns=1, post_failure_time=0.3, timestep_safety=0.5,
                     bond_tensile_strength=0.0, main_joint_friction=0.0, base_joint_friction=0.0, shrink_overlaps=1,
                     joint_stiffness_scale=1.0, bond_gap=0.0, resume=-1, checkpoint_every=600.0,
                     out="results/tilting_table", noTableOk=True)
