@@ -419,7 +419,7 @@ while state["failure_tilt"] is None and state["tilt"] <= table.max_tilt + 1e-9:
              "moved_mm": 1e3 * moved,  # a local collapse that came to rest shows here
              "gone": [c for c, gone in zip(watched_columns, off) if gone]}
     if outcome == "failed":  # a collapse or a creep: whoever weighs the failure tilt needs to know which
-        stage["failed_by"] = "fail_displacement" if off.sum() >= criteria.fail_columns else "max_stage_time"
+        stage["failed_by"] = "fail_displacement" if criteria.collapsed(off) else "max_stage_time"
     state["stages"].append(stage)
     print(stage_line(stage), flush=True)
     series.snapshot()

@@ -60,6 +60,10 @@ class StageCriteria:
         if self.fail_columns != int(self.fail_columns):
             raise ValueError(f"fail_columns = {self.fail_columns} is invalid: it must be a whole number >= 1")
 
+    def collapsed(self, off: np.ndarray) -> bool:
+        """Whether enough watched groups are ``off`` (gone) for the stage to fail by fail_displacement."""
+        return int(np.sum(off)) >= self.fail_columns
+
 
 def gone(now: np.ndarray, reference: np.ndarray, criteria: StageCriteria) -> np.ndarray:
     """Which watched groups (centroids ``now``) moved more than fail_displacement from ``reference``."""
@@ -104,7 +108,7 @@ def stage_outcome(now: np.ndarray, before: np.ndarray, reference: np.ndarray, el
     rest_speed vibrates in place (without local damping a column can ring for seconds): that is
     equilibrium, not creep."""
     off = gone(now, reference, criteria)
-    if off.sum() >= criteria.fail_columns:
+    if criteria.collapsed(off):
         return "failed"
     speed = np.linalg.norm(now - before, axis=1)[~off].max(initial=0.0) / criteria.chunk
     if speed < criteria.rest_speed:
