@@ -20,10 +20,10 @@ from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
 
 
-def snapshots(folder: str) -> list[tuple[float, str]]:
-    """(simulated time, .vtu path) of the bonds series in ``folder``/paraview."""
+def snapshots(folder: str, kind: str = "bonds") -> list[tuple[float, str]]:
+    """(simulated time, .vtu path) of the ``kind`` (bonds, discs) series in ``folder``/paraview."""
     series = os.path.join(folder, "paraview")
-    root = ET.parse(os.path.join(series, "bonds.pvd")).getroot()
+    root = ET.parse(os.path.join(series, f"{kind}.pvd")).getroot()
     return [(float(d.get("timestep")), os.path.join(series, d.get("file"))) for d in root.iter("DataSet")]
 
 

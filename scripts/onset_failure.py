@@ -1,0 +1,108 @@
+"""The failure surface at the failure's onset, from a finished tilting-table run's ParaView series.
+
+    ./yade -x -n scripts/onset_failure.py results/tilting_table/<run> [...]
+
+The example analyses the displacements at the end of the post-failure run (0.3 s after the
+failing stage), when a slope that failed high (38 deg) has already collapsed onto the table and
+the toe columns' failure points lie on it. This runs the same analysis
+(toppling.analysis.column_failure, the example's arguments) on the snapshot the example writes at
+the end of the failing stage, when fail_columns column tops have just gone fail_displacement:
+the discs' positions and velocities then, and the bonds broken by then (at their discs'
+positions at the last equilibrium). Prints φ, S/H, T/H and the toppling or sliding columns at
+the onset beside the summary's.
+"""
+import json
+import math
+import os
+import sys
+
+import numpy as np
+from vtkmodules.util.numpy_support import vtk_to_numpy
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from bond_stress_history import bond_arrays, read_grid, snapshots  # noqa: E402
+from toppling import analysis  # noqa: E402
+from toppling.columns import ColumnLayout  # noqa: E402
+
+
+def disc_arrays(path: str) -> tuple[np.ndarray, dict[str, np.ndarray]]:
+    """Positions (x, y) and point data of a discs .vtu."""
+    grid = read_grid(path)
+    data = grid.GetPointData()
+    fields = {data.GetArrayName(i): vtk_to_numpy(data.GetArray(i)) for i in range(data.GetNumberOfArrays())}
+    return vtk_to_numpy(grid.GetPoints().GetData())[:, :2], fields
+
+
+def at_time(folder: str, kind: str, time: float) -> str:
+    """The ``kind`` (discs, bonds) snapshot written at simulated ``time``."""
+    written, path = min(snapshots(folder, kind), key=lambda entry: abs(entry[0] - time))
+    if abs(written - time) > 1e-9 * max(1.0, time):
+        raise ValueError(f"{folder}/paraview has no {kind} snapshot at t = {time} s: is the run finished?")
+    return path
+
+
+def onset(folder: str) -> dict:
+    """φ, zones, S/H and T/H of the run in ``folder`` at the end of its failing stage."""
+    with open(os.path.join(folder, "checkpoint.json")) as f:
+        state = json.load(f)
+    inputs, failed = state["inputs"], state["stages"][-1]
+    if failed["outcome"] != "failed":
+        raise ValueError(f"{folder} did not fail: nothing to analyse")
+    layout = ColumnLayout(**state["layout"])
+    reference = np.array(state["reference"])
+    now, discs = disc_arrays(at_time(folder, "discs", failed["time"]))
+    bonds = bond_arrays(at_time(folder, "bonds", failed["time"]))
+    grid = read_grid(at_time(folder, "bonds", failed["time"]))
+    pairs = vtk_to_numpy(grid.GetCells().GetConnectivityArray()).reshape(-1, 2)
+    broken = pairs[bonds["state"] > 1]
+    toe = (layout.toe_x, 0.0)
+    cracks = analysis.slope_frame(0.5 * (reference[broken[:, 0]] + reference[broken[:, 1]]), toe, 90)
+    off_table = -2 * inputs["rmax"]  # the example's OFF_TABLE
+    on_table = reference[:, 1] > off_table
+    column = np.array([layout.column_of(x) for x in reference[:, 0]])
+    column[~on_table] = 0
+    index = {i: n for n, i in enumerate(state["ids"])}
+    points = state["points"]
+    top_of = {label: index[i] for label, i in zip(points["labels"], points["ids"]) if on_table[index[i]]}
+    labels = [analysis.column_label(k) for k in range(1, layout.count + 1)]
+    speed = np.linalg.norm(discs["velocity"][:, :2], axis=1)
+    moving = [label in top_of and speed[top_of[label]] > inputs["rest_speed"] for label in labels]
+    fell_off = [label in top_of and now[top_of[label], 1] < off_table for label in labels]
+    zones, failure_points = analysis.column_failure(
+        analysis.slope_frame(reference, toe, 90), now - reference, column, [top_of.get(label) for label in labels],
+        moving, cracks, band=2 * inputs["rmax"], fell_off=fell_off, least_motion=inputs["rmin"])
+    planes = analysis.fit_failure_surface(failure_points) if len(failure_points) >= 2 else []
+    alpha = math.radians(failed["tilt"])
+    far_edges = [k * layout.width * math.cos(alpha) - layout.heights[k - 1] * math.sin(alpha)
+                 for k in range(1, layout.count + 1)]
+    height = max(-math.sin(alpha) * (x - layout.toe_x) + math.cos(alpha) * y for x, y in layout.section())
+    return {"phi_deg": [p.phi_deg for p in planes], "zones": dict(zip(labels, zones)), "cracks": len(broken),
+            **analysis.zone_distances(zones, far_edges, height)}
+
+
+def failing(zones: dict) -> str:
+    return " ".join(label for label, z in zones.items() if z in ("toppling", "sliding")) or "-"
+
+
+def main(folders: list[str]) -> None:
+    print("| run | failure tilt (°) | φ at the onset (°) | S/H, T/H at the onset | failing columns at the onset "
+          "| cracks at the onset | φ after the post-failure run (°) | S/H, T/H after it |")
+    print("|---|---|---|---|---|---|---|---|")
+    for folder in folders:
+        with open(os.path.join(folder, "summary.json")) as f:
+            summary = json.load(f)
+        o = onset(folder)
+        print(f"| {os.path.basename(folder.rstrip('/'))} | {summary['failure_tilt_deg']:g} "
+              f"| {', '.join(f'{p:.1f}' for p in o['phi_deg']) or '-'} | {fmt(o['s_over_h'])}, {fmt(o['t_over_h'])} "
+              f"| {failing(o['zones'])} | {o['cracks']} | {', '.join(f'{p:.1f}' for p in summary['phi_deg']) or '-'} "
+              f"| {fmt(summary['s_over_h'])}, {fmt(summary['t_over_h'])} |")
+
+
+def fmt(value) -> str:
+    return "-" if value is None else f"{value:.2f}"
+
+
+if __name__ == "__main__":
+    if len(sys.argv) < 2:
+        sys.exit(__doc__)
+    main(sys.argv[1:])
