@@ -462,7 +462,6 @@ if phase["name"] == "post":  # let the failure surface develop
 
 # ---- analysis (slope frame: x normal to the columns towards the face, y up the columns) ----
 def analyse() -> dict:
-    alpha = math.radians(state["failure_tilt"])
     reference = np.array(state["reference"])
     now = tilting.positions(ids)
     toe = (layout.toe_x, 0.0)
@@ -486,12 +485,9 @@ def analyse() -> dict:
                                                     moving, cracks, band=2 * table.rmax, fell_off=fell_off,
                                                     least_motion=table.rmin)  # the model's resolution
     planes = analysis.fit_failure_surface(failure_points) if len(failure_points) >= 2 else []
-    # horizontal distance (tilted table) from the toe to each column's far top corner; slope height
-    far_edges = [k * WIDTH * math.cos(alpha) - layout.heights[k - 1] * math.sin(alpha)
-                 for k in range(1, layout.count + 1)]
-    height = max(-math.sin(alpha) * (x - layout.toe_x) + math.cos(alpha) * y for x, y in layout.section())
+    height = layout.tilted_height(state["failure_tilt"])
     return {"planes": planes, "failure_points": failure_points, "zones": zones, "height": height,
-            **analysis.zone_distances(zones, far_edges, height), "disp": disp, "now": now}
+            **analysis.zone_distances(zones, layout.far_edges(state["failure_tilt"]), height), "disp": disp, "now": now}
 
 
 result = analyse()

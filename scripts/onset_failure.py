@@ -12,7 +12,6 @@ positions at the last equilibrium). Prints φ, S/H, T/H and the toppling or slid
 the onset beside the summary's.
 """
 import json
-import math
 import os
 import sys
 
@@ -72,12 +71,9 @@ def onset(folder: str) -> dict:
         analysis.slope_frame(reference, toe, 90), now - reference, column, [top_of.get(label) for label in labels],
         moving, cracks, band=2 * inputs["rmax"], fell_off=fell_off, least_motion=inputs["rmin"])
     planes = analysis.fit_failure_surface(failure_points) if len(failure_points) >= 2 else []
-    alpha = math.radians(failed["tilt"])
-    far_edges = [k * layout.width * math.cos(alpha) - layout.heights[k - 1] * math.sin(alpha)
-                 for k in range(1, layout.count + 1)]
-    height = max(-math.sin(alpha) * (x - layout.toe_x) + math.cos(alpha) * y for x, y in layout.section())
+    distances = analysis.zone_distances(zones, layout.far_edges(failed["tilt"]), layout.tilted_height(failed["tilt"]))
     return {"phi_deg": [p.phi_deg for p in planes], "zones": dict(zip(labels, zones)), "cracks": len(broken),
-            **analysis.zone_distances(zones, far_edges, height)}
+            **distances}
 
 
 def failing(zones: dict) -> str:

@@ -53,6 +53,17 @@ class ColumnLayout:
             outline += [(right, h), (left, h)]
         return outline
 
+    def far_edges(self, tilt_deg: float) -> list[float]:
+        """Horizontal distance from the toe to each column's far top corner, the table tilted
+        by ``tilt_deg`` towards the toe (thesis §5.3.3.2: the S and T of S/H, T/H)."""
+        a = math.radians(tilt_deg)
+        return [k * self.width * math.cos(a) - h * math.sin(a) for k, h in enumerate(self.heights, start=1)]
+
+    def tilted_height(self, tilt_deg: float) -> float:
+        """Height H of the slope that the columns make on a table tilted by ``tilt_deg``."""
+        a = math.radians(tilt_deg)
+        return max(-math.sin(a) * (x - self.toe_x) + math.cos(a) * y for x, y in self.section())
+
     def top_centre(self, k: int) -> tuple[float, float]:
         left, right = self.span(k)
         return 0.5 * (left + right), self.heights[k - 1]

@@ -44,6 +44,18 @@ def test_profile_layout_has_flat_tops_at_column_centres():
     assert layout.top_centre(2) == pytest.approx((0.025, 0.15))
 
 
+def test_tilted_layout_height_and_far_edges_follow_the_rotated_outline():
+    # two columns 5 cm wide, 0.1 and 0.3 m high, toe at x = 0.1; tilted 30 deg towards the toe
+    layout = columns.ColumnLayout(toe_x=0.1, width=0.05, heights=[0.1, 0.3])
+    c, s = math.cos(math.radians(30)), math.sin(math.radians(30))
+    # tilting towards the toe raises what lies behind it: the highest point is column 2's far
+    # top corner, 0.1 m behind the toe and 0.3 m up
+    assert layout.tilted_height(30) == pytest.approx(0.1 * s + 0.3 * c)
+    assert layout.far_edges(30) == pytest.approx([0.05 * c - 0.1 * s, 0.10 * c - 0.3 * s])
+    assert layout.tilted_height(0) == pytest.approx(0.3)
+    assert layout.far_edges(0) == pytest.approx([0.05, 0.10])
+
+
 @pytest.mark.parametrize("tilt, expected", [(16.0, "equilibrium"), (27.0, "failed")])
 def test_stage_ends_in_equilibrium_below_and_fails_above_the_joint_friction(empty_scene, tilt, expected):
     setup = incline.build(0.1, 0.05, 0.012 / 2.5, 0.012, ROCK, math.degrees(math.atan(0.4)))  # 21.8 deg
