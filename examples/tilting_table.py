@@ -471,9 +471,8 @@ def analyse() -> dict:
     cracks = analysis.slope_frame(np.array([tuple(p)[:2] for p in law.breakPosition]).reshape(-1, 2), toe, 90)
     # a disc that had dropped off the table before the last equilibrium (a loose toe disc at
     # coarse resolution) is out of the model: its fall is no column's motion
+    column = layout.columns_of(reference, OFF_TABLE)
     on_table = reference[:, 1] > OFF_TABLE
-    column = np.array([layout.column_of(x) for x in reference[:, 0]])
-    column[~on_table] = 0
     index = {i: n for n, i in enumerate(ids)}
     top_of = {label: index[i] for label, i in zip(points.labels, points.ids) if on_table[index[i]]}
     labels = [analysis.column_label(k) for k in range(1, layout.count + 1)]

@@ -19,7 +19,7 @@ import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from bond_stress_history import bond_arrays, read_grid, snapshots  # noqa: E402
+from bond_stress_history import cell_arrays, read_grid, snapshots  # noqa: E402
 from toppling import analysis  # noqa: E402
 from toppling.columns import ColumnLayout  # noqa: E402
 
@@ -50,16 +50,14 @@ def onset(folder: str) -> dict:
     layout = ColumnLayout(**state["layout"])
     reference = np.array(state["reference"])
     now, discs = disc_arrays(at_time(folder, "discs", failed["time"]))
-    bonds = bond_arrays(at_time(folder, "bonds", failed["time"]))
     grid = read_grid(at_time(folder, "bonds", failed["time"]))
     pairs = vtk_to_numpy(grid.GetCells().GetConnectivityArray()).reshape(-1, 2)
-    broken = pairs[bonds["state"] > 1]
+    broken = pairs[cell_arrays(grid)["state"] > 1]
     toe = (layout.toe_x, 0.0)
     cracks = analysis.slope_frame(0.5 * (reference[broken[:, 0]] + reference[broken[:, 1]]), toe, 90)
     off_table = -2 * inputs["rmax"]  # the example's OFF_TABLE
+    column = layout.columns_of(reference, off_table)
     on_table = reference[:, 1] > off_table
-    column = np.array([layout.column_of(x) for x in reference[:, 0]])
-    column[~on_table] = 0
     index = {i: n for n, i in enumerate(state["ids"])}
     points = state["points"]
     top_of = {label: index[i] for label, i in zip(points["labels"], points["ids"]) if on_table[index[i]]}

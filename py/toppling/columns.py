@@ -10,6 +10,7 @@ import math
 from dataclasses import dataclass
 from typing import Callable, Mapping, Sequence
 
+import numpy as np
 from yade.wrapper import JointSetGeometry
 
 
@@ -43,6 +44,14 @@ class ColumnLayout:
         """Column of a point at x (1-based), 0 outside the columns."""
         k = math.floor((self.toe_x - x) / self.width) + 1
         return k if 1 <= k <= self.count else 0
+
+    def columns_of(self, points: np.ndarray, floor: float) -> np.ndarray:
+        """Column of each xy point (1-based), 0 outside the columns or below height ``floor``
+        (a disc that dropped off the table is no column's)."""
+        points = np.asarray(points, dtype=float)
+        column = np.array([self.column_of(x) for x in points[:, 0]], dtype=int)
+        column[points[:, 1] <= floor] = 0
+        return column
 
     def section(self) -> list[tuple[float, float]]:
         """The stepped outline, counter-clockwise from the toe."""

@@ -44,6 +44,12 @@ def test_profile_layout_has_flat_tops_at_column_centres():
     assert layout.top_centre(2) == pytest.approx((0.025, 0.15))
 
 
+def test_points_take_their_column_unless_outside_or_fallen_below_the_floor():
+    layout = columns.ColumnLayout(toe_x=0.1, width=0.05, heights=[0.1, 0.3])
+    points = np.array([[0.09, 0.05], [0.04, 0.2], [0.12, 0.05], [0.09, -0.02], [-0.01, 0.1]])
+    assert list(layout.columns_of(points, floor=-0.01)) == [1, 2, 0, 0, 0]
+
+
 def test_tilted_layout_height_and_far_edges_follow_the_rotated_outline():
     # two columns 5 cm wide, 0.1 and 0.3 m high, toe at x = 0.1; tilted 30 deg towards the toe
     layout = columns.ColumnLayout(toe_x=0.1, width=0.05, heights=[0.1, 0.3])
