@@ -462,31 +462,15 @@ if phase["name"] == "post":  # let the failure surface develop
 
 # ---- analysis (slope frame: x normal to the columns towards the face, y up the columns) ----
 def analyse() -> dict:
-    reference = np.array(state["reference"])
-    now = tilting.positions(ids)
-    toe = (layout.toe_x, 0.0)
-    pos_local = analysis.slope_frame(reference, toe, 90)
-    disp = now - reference  # the slope frame is the table frame shifted: same components
-    law = scene.bond_law()
-    cracks = analysis.slope_frame(np.array([tuple(p)[:2] for p in law.breakPosition]).reshape(-1, 2), toe, 90)
-    # a disc that had dropped off the table before the last equilibrium (a loose toe disc at
-    # coarse resolution) is out of the model: its fall is no column's motion
-    column = layout.columns_of(reference, OFF_TABLE)
-    on_table = reference[:, 1] > OFF_TABLE
+    reference, now = np.array(state["reference"]), tilting.positions(ids)
     index = {i: n for n, i in enumerate(ids)}
-    top_of = {label: index[i] for label, i in zip(points.labels, points.ids) if on_table[index[i]]}
-    labels = [analysis.column_label(k) for k in range(1, layout.count + 1)]
-    # over the post-failure run, from the failed stage's end
-    moving = [label in top_of and points.rate_since(label, state["stages"][-1]["time"]) > table.rest_speed
-              for label in labels]
-    fell_off = [label in top_of and now[top_of[label], 1] < OFF_TABLE for label in labels]
-    zones, failure_points = analysis.column_failure(pos_local, disp, column, [top_of.get(label) for label in labels],
-                                                    moving, cracks, band=2 * table.rmax, fell_off=fell_off,
-                                                    least_motion=table.rmin)  # the model's resolution
-    planes = analysis.fit_failure_surface(failure_points) if len(failure_points) >= 2 else []
-    height = layout.tilted_height(state["failure_tilt"])
-    return {"planes": planes, "failure_points": failure_points, "zones": zones, "height": height,
-            **analysis.zone_distances(zones, layout.far_edges(state["failure_tilt"]), height), "disp": disp, "now": now}
+    failed_at = state["stages"][-1]["time"]  # a top still moving over the post-failure run
+    result = analysis.table_failure(
+        layout, reference, now, {label: index[i] for label, i in zip(points.labels, points.ids)},
+        lambda label: points.rate_since(label, failed_at) > table.rest_speed,
+        [tuple(p)[:2] for p in scene.bond_law().breakPosition], state["failure_tilt"], floor=OFF_TABLE,
+        band=2 * table.rmax, least_motion=table.rmin)  # the model's resolution
+    return {**result, "disp": now - reference, "now": now}
 
 
 result = analyse()

@@ -53,25 +53,16 @@ def onset(folder: str) -> dict:
     grid = read_grid(at_time(folder, "bonds", failed["time"]))
     pairs = vtk_to_numpy(grid.GetCells().GetConnectivityArray()).reshape(-1, 2)
     broken = pairs[cell_arrays(grid)["state"] > 1]
-    toe = (layout.toe_x, 0.0)
-    cracks = analysis.slope_frame(0.5 * (reference[broken[:, 0]] + reference[broken[:, 1]]), toe, 90)
-    off_table = -2 * inputs["rmax"]  # the example's OFF_TABLE
-    column = layout.columns_of(reference, off_table)
-    on_table = reference[:, 1] > off_table
     index = {i: n for n, i in enumerate(state["ids"])}
-    points = state["points"]
-    top_of = {label: index[i] for label, i in zip(points["labels"], points["ids"]) if on_table[index[i]]}
-    labels = [analysis.column_label(k) for k in range(1, layout.count + 1)]
     speed = np.linalg.norm(discs["velocity"][:, :2], axis=1)
-    moving = [label in top_of and speed[top_of[label]] > inputs["rest_speed"] for label in labels]
-    fell_off = [label in top_of and now[top_of[label], 1] < off_table for label in labels]
-    zones, failure_points = analysis.column_failure(
-        analysis.slope_frame(reference, toe, 90), now - reference, column, [top_of.get(label) for label in labels],
-        moving, cracks, band=2 * inputs["rmax"], fell_off=fell_off, least_motion=inputs["rmin"])
-    planes = analysis.fit_failure_surface(failure_points) if len(failure_points) >= 2 else []
-    distances = analysis.zone_distances(zones, layout.far_edges(failed["tilt"]), layout.tilted_height(failed["tilt"]))
-    return {"phi_deg": [p.phi_deg for p in planes], "zones": dict(zip(labels, zones)), "cracks": len(broken),
-            **distances}
+    tops = {label: index[i] for label, i in zip(state["points"]["labels"], state["points"]["ids"])}
+    result = analysis.table_failure(
+        layout, reference, now, tops, lambda label: speed[tops[label]] > inputs["rest_speed"],
+        0.5 * (reference[broken[:, 0]] + reference[broken[:, 1]]), failed["tilt"],
+        floor=-2 * inputs["rmax"], band=2 * inputs["rmax"], least_motion=inputs["rmin"])  # as the example
+    labels = [analysis.column_label(k) for k in range(1, layout.count + 1)]
+    return {"phi_deg": [p.phi_deg for p in result["planes"]], "zones": dict(zip(labels, result["zones"])),
+            "cracks": len(broken), "s_over_h": result["s_over_h"], "t_over_h": result["t_over_h"]}
 
 
 def failing(zones: dict) -> str:

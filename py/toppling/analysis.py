@@ -31,7 +31,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Optional, Sequence
+from typing import Callable, Optional, Sequence
 
 import numpy as np
 
@@ -172,6 +172,30 @@ def column_failure(pos: np.ndarray, disp: np.ndarray, column: np.ndarray, tops: 
         if point and zones[-1] in ("toppling", "sliding"):
             points.append(point)
     return zones, points
+
+
+def table_failure(layout, reference: np.ndarray, now: np.ndarray, tops: dict[str, int],
+                  moving: Callable[[str], bool], cracks: np.ndarray, tilt_deg: float, floor: float,
+                  band: float, least_motion: float) -> dict:
+    """Failure surface(s), zones, S/H and T/H of a tilting-table run (columns.ColumnLayout
+    ``layout``) from its discs' positions at the last equilibrium (``reference``, table frame)
+    and ``now``, the index of each column's top disc by label (``tops``), whether a column top
+    still moves (``moving(label)``), the cracks' positions (table frame) and the failure tilt.
+    A disc below height ``floor`` at the last equilibrium had dropped off the table: its fall is
+    no column's motion. ``band`` and ``least_motion`` as in column_failure."""
+    toe = (layout.toe_x, 0.0)
+    on_table = reference[:, 1] > floor
+    top_of = {label: i for label, i in tops.items() if on_table[i]}
+    labels = [column_label(k) for k in range(1, layout.count + 1)]
+    zones, points = column_failure(
+        slope_frame(reference, toe, 90), now - reference, layout.columns_of(reference, floor),
+        [top_of.get(label) for label in labels], [label in top_of and moving(label) for label in labels],
+        slope_frame(np.asarray(cracks, dtype=float).reshape(-1, 2), toe, 90), band=band,
+        fell_off=[label in top_of and now[top_of[label], 1] < floor for label in labels], least_motion=least_motion)
+    planes = fit_failure_surface(points) if len(points) >= 2 else []
+    height = layout.tilted_height(tilt_deg)
+    return {"planes": planes, "failure_points": points, "zones": zones, "height": height,
+            **zone_distances(zones, layout.far_edges(tilt_deg), height)}
 
 
 def zone_distances(zones: Sequence[str], far_edges: Sequence[float], height: float) -> dict[str, Optional[float]]:
