@@ -7,7 +7,7 @@ import pytest
 from yade import O, utils
 from yade.wrapper import ParallelBondMat
 
-from toppling import columns, incline, monitor, scene, tilting
+from toppling import analysis, columns, incline, monitor, scene, tilting
 
 ROCK = dict(young=15e6, knKs=1.4, density=2340.0, bondYoung=15.9e6, bondKnKs=1.8, normalDamping=0.13,
             bondNormalDamping=0.2)
@@ -60,6 +60,31 @@ def test_tilted_layout_height_and_far_edges_follow_the_rotated_outline():
     assert layout.far_edges(30) == pytest.approx([0.05 * c - 0.1 * s, 0.10 * c - 0.3 * s])
     assert layout.tilted_height(0) == pytest.approx(0.3)
     assert layout.far_edges(0) == pytest.approx([0.05, 0.10])
+
+
+def test_table_failure_finds_the_hinge_plane_of_toppling_columns_and_ignores_discs_off_the_table():
+    """Six columns 0.3 m high; columns 1-4 rotate about hinges on a plane rising into the slope
+    at phi = 15 deg from 2 cm above the toe (displacement zero below the hinge, growing above
+    it), columns 5-6 stay put, and a disc that had already dropped below the table falls on."""
+    layout = columns.ColumnLayout(toe_x=0.3, width=0.05, heights=[0.3] * 6)
+    hinge = {k: 0.02 + math.tan(math.radians(15)) * (k - 0.5) * 0.05 for k in range(1, 5)}
+    reference, disp, tops = [], [], {}
+    for k in range(1, 7):
+        centre = layout.top_centre(k)[0]
+        for y in np.arange(0.001, 0.3, 0.002):
+            for dx in (-0.01, 0.0, 0.01):
+                reference.append((centre + dx, y))
+                disp.append((0.001 + 0.05 * (y - hinge[k]), 0.0) if k in hinge and y > hinge[k] else (0.0, 0.0))
+        tops[analysis.column_label(k)] = len(reference) - 2  # the top disc at the column's centre
+    reference.append((layout.top_centre(1)[0], -0.05))  # off the table before the last equilibrium
+    disp.append((0.0, -1.0))
+    reference = np.array(reference)
+    result = analysis.table_failure(layout, reference, reference + np.array(disp), tops,
+                                    lambda label: label in ("A-1", "B-2", "C-3", "D-4"), np.zeros((0, 2)), 30.0,
+                                    floor=-0.01, band=0.01, least_motion=1e-5)
+    assert [p.phi_deg for p in result["planes"]] == [pytest.approx(15.0, abs=0.5)]
+    assert result["zones"] == ["toppling"] * 4 + ["no-movement"] * 2
+    assert result["t_over_h"] == pytest.approx(layout.far_edges(30.0)[3] / layout.tilted_height(30.0))
 
 
 @pytest.mark.parametrize("tilt, expected", [(16.0, "equilibrium"), (27.0, "failed")])
