@@ -169,7 +169,7 @@ readParamsFromTable(arrangement="ideal", rmin=1e-3, rmax=4e-3, porosity=0.18, se
                     settle_damping=0.7, chunk=0.02, rest_speed=1e-3, fail_displacement=0.05, max_stage_time=2.0,
                     fail_columns=1, post_failure_time=0.3, timestep_safety=0.5,
                     bond_tensile_strength=0.0, main_joint_friction=0.0, base_joint_friction=0.0, shrink_overlaps=1,
-                    joint_stiffness_scale=1.0, bond_gap=0.0, resume=-1, checkpoint_every=600.0,
+                    joint_stiffness_scale=1.0, bond_gap=0.0, sliding_toe=0, resume=-1, checkpoint_every=600.0,
                     out="results/tilting_table", noTableOk=True)
 from yade.params import table  # noqa: E402  (filled by readParamsFromTable)
 
@@ -204,6 +204,8 @@ if table.layout_seed != int(table.layout_seed) or table.layout_seed < 0:
     raise ValueError(f"layout_seed = {table.layout_seed} is invalid: it must be an integer >= 0")
 if table.shrink_overlaps not in (0, 1):
     raise ValueError(f"shrink_overlaps = {table.shrink_overlaps} is invalid: it must be 0 or 1")
+if table.sliding_toe not in (0, 1):
+    raise ValueError(f"sliding_toe = {table.sliding_toe} is invalid: it must be 0 or 1")
 if not 0 < table.joint_stiffness_scale <= 1:
     raise ValueError(f"joint_stiffness_scale = {table.joint_stiffness_scale} is invalid: it must be in (0, 1] "
                      "(1: Table 5-3's joint stiffnesses)")
@@ -272,7 +274,7 @@ def build() -> columns.ColumnLayout:
                           frictionAngle=math.atan(mu_main), gap=gap, thickness=T)
     base = SmoothJointMat(normalStiffness=kn_base, shearStiffness=kn_base,
                           frictionAngle=math.atan(mu_base), gap=gap, thickness=T)
-    cross = layout.cross_joints(cross_joint_heights(layout), BLOCK_LENGTH)
+    cross = layout.cross_joints(cross_joint_heights(layout), BLOCK_LENGTH, sliding_toe=bool(table.sliding_toe))
     joints.install_joints([(layout.main_joints(), main), (cross, base)],
                           lo=(-1, -1), hi=(layout.toe_x + 1, 1))
     return layout
@@ -310,7 +312,7 @@ inputs = output.table_inputs(table)
 checkpoint = monitor.Checkpoint(table.out)
 # parameters newer than some checkpoints: the value those runs had
 ADDED = {"shrink_overlaps": 0, "joint_stiffness_scale": 1.0, "fail_columns": 1, "bond_gap": 0.0, "settle_damping": 0.7,
-         "stage_rate": 0.0, "layout_seed": 1}
+         "stage_rate": 0.0, "layout_seed": 1, "sliding_toe": 0}
 if checkpoint.continues(inputs, table.resume, free=FREE, added=ADDED):
     state = checkpoint.load()
     print(f"resuming {table.out} in its {state['phase']['name']} phase at {state['tilt']} deg "

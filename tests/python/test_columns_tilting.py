@@ -30,6 +30,8 @@ def test_layout_outline_columns_and_joints():
     assert sorted(y for _, y in sliver.segmentStarts) == pytest.approx([0.025, 0.065, 0.105, 0.145])
     single = layout.cross_joints({2: [0.03], 3: [0.06]}, block_length=0.04)  # one base joint per column
     assert sorted(y for _, y in single.segmentStarts) == pytest.approx([0.03, 0.06])
+    toe = layout.cross_joints({1: [0.02, 0.09, 0.12], 2: [0.03]}, block_length=0.04, sliding_toe=True)
+    assert sorted(y for _, y in toe.segmentStarts) == pytest.approx([0.02, 0.03, 0.09])  # 0.12 is above column 1
     with pytest.raises(ValueError, match="width"):
         columns.ColumnLayout(0.1, 0.0, [0.1])
     with pytest.raises(ValueError, match="block_length"):

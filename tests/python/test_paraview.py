@@ -120,6 +120,30 @@ def test_bond_stress_history_reads_the_series_back(empty_scene, tmp_path, capsys
     assert [c.strip() for c in row[7:9]] == ["1", "0"]  # bonds above half and twice its stress
 
 
+def test_first_crack_reads_the_peaks_and_interpolates_the_tilt(empty_scene, tmp_path):
+    """scripts/first_crack.py: the peak bond stress of each stage end (the bond pulled further
+    at the second), and the tilt at which it reaches a strength between them."""
+    first_crack = load_script("first_crack")
+    rock = material()
+    O.bodies.append([scene.disc((0, 0), R, rock, fixed=True), scene.disc((0, 2 * R), R, rock, fixed=True)])
+    O.engines = scene.engines(gravity=(0, 0, 0))
+    bonding.bond_within_gap(1e-9)
+    boundary.move([1], (0, 1e-3))
+    series = paraview.ParaViewSeries(str(tmp_path / "paraview"))
+    stages, sigma = [], []
+    for tilt in (26.0, 28.0):
+        scene.run_steps(5)  # pulled further: more tension
+        series.snapshot()
+        stages.append({"time": O.time, "tilt": tilt})
+        sigma.append(O.interactions[0, 1].phys.bondSigmaMax)
+    (tmp_path / "summary.json").write_text(json.dumps({"stages": stages}))
+    peaks = first_crack.elastic_peaks(str(tmp_path))
+    assert [t for t, _ in peaks] == [26.0, 28.0] and [s for _, s in peaks] == pytest.approx(sigma, rel=1e-6)
+    assert first_crack.crossing_tilt(peaks, 0.25 * sigma[0] + 0.75 * sigma[1]) == pytest.approx(27.5)
+    assert first_crack.crossing_tilt(peaks, 0.5 * sigma[0]) == 26.0  # cracked by the first stage: an upper bound
+    assert first_crack.crossing_tilt(peaks, 2 * sigma[1]) is None
+
+
 def test_crack_heights_tells_roots_from_bonds_above_the_table(empty_scene, tmp_path, capsys):
     """scripts/crack_heights.py: a bond to a disc within Rmax of the table is a root, one between
     discs 30 mm up is in 20-50 mm. The root is pulled until it breaks: one new crack, at the root."""
