@@ -138,10 +138,12 @@ def test_first_crack_reads_the_peaks_and_interpolates_the_tilt(empty_scene, tmp_
         sigma.append(O.interactions[0, 1].phys.bondSigmaMax)
     (tmp_path / "summary.json").write_text(json.dumps({"stages": stages}))
     peaks = first_crack.elastic_peaks(str(tmp_path))
-    assert [t for t, _ in peaks] == [26.0, 28.0] and [s for _, s in peaks] == pytest.approx(sigma, rel=1e-6)
+    assert [t for t, _ in peaks] == [26.0, 28.0] and [s[0] for _, s in peaks] == pytest.approx(sigma, rel=1e-6)
     assert first_crack.crossing_tilt(peaks, 0.25 * sigma[0] + 0.75 * sigma[1]) == pytest.approx(27.5)
     assert first_crack.crossing_tilt(peaks, 0.5 * sigma[0]) == 26.0  # cracked by the first stage: an upper bound
     assert first_crack.crossing_tilt(peaks, 2 * sigma[1]) is None
+    two = [(26.0, [3.0, 1.0]), (28.0, [4.0, 2.0]), (30.0, [5.0, 4.0])]  # the second bond from 1 to 4 Pa
+    assert first_crack.crossing_tilt(two, 3.0, rank=2) == pytest.approx(29.0)
 
 
 def test_crack_heights_tells_roots_from_bonds_above_the_table(empty_scene, tmp_path, capsys):
