@@ -274,7 +274,10 @@ def build() -> columns.ColumnLayout:
                           frictionAngle=math.atan(mu_main), gap=gap, thickness=T)
     base = SmoothJointMat(normalStiffness=kn_base, shearStiffness=kn_base,
                           frictionAngle=math.atan(mu_base), gap=gap, thickness=T)
-    cross = layout.cross_joints(cross_joint_heights(layout), BLOCK_LENGTH, sliding_toe=bool(table.sliding_toe))
+    cuts = cross_joint_heights(layout)
+    cross = layout.cross_joints(cuts, BLOCK_LENGTH, sliding_toe=bool(table.sliding_toe))
+    print(f"cross joints: {len(cross.segmentStarts)} of {sum(map(len, cuts.values()))} cuts kept by the layout's rules",
+          flush=True)
     joints.install_joints([(layout.main_joints(), main), (cross, base)],
                           lo=(-1, -1), hi=(layout.toe_x + 1, 1))
     return layout
@@ -445,10 +448,15 @@ def run_record() -> dict:
 
 
 if state["failure_tilt"] is None:
-    # stable throughout: say so in the summary (a sweep goes on), resumable with a higher max_tilt
+    # stable throughout: say so in the summary (a sweep goes on), resumable with a higher max_tilt;
+    # how far each column top has moved shows what holds the slope
+    tops = {label: 1e3 * points.total(label)[-1] for label in points.labels}
     output.write_summary(table.out, inputs, failure_tilt_deg=None, stable_up_to_deg=state["stages"][-1]["tilt"],
-                         phi_deg=[], s_over_h=None, t_over_h=None, **run_record())
-    print(f"no failure up to max_tilt = {table.max_tilt} deg: run again with a higher max_tilt")
+                         phi_deg=[], s_over_h=None, t_over_h=None, top_displacement_mm=tops, **run_record())
+    plots.tilt_history(table.out, state["energy"], points, None)
+    plots.monitoring(table.out, points, points.labels[::2])
+    print(f"no failure up to max_tilt = {table.max_tilt} deg: run again with a higher max_tilt; column tops moved "
+          + ", ".join(f"{label} {mm:.2f}" for label, mm in tops.items()) + " mm")
     raise SystemExit(0)
 if phase["name"] == "analysis" and O.time - state["stages"][-1]["time"] < table.post_failure_time:
     # run again with a longer post_failure_time: the post-failure run goes on from where it began

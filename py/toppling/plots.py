@@ -67,10 +67,12 @@ def outside(centres: np.ndarray, limits: tuple[float, float, float, float]) -> i
 
 
 def tilt_history(out: str, energy: Sequence[tuple[float, float, float]], points: MonitoringPoints,
-                 failure_tilt: float) -> str:
-    """Tilt, largest monitoring-point displacement and kinetic energy against simulated time."""
+                 failure_tilt: Optional[float]) -> str:
+    """Tilt, largest monitoring-point displacement and kinetic energy against simulated time
+    (``failure_tilt`` None: the slope stood throughout)."""
     t, tilt, ek = (np.array(c) for c in zip(*energy))
-    fig, ax = output.figure("simulated time (s)", "tilt (deg)", f"Tilting, failure at {failure_tilt:.1f} deg")
+    title = f"failure at {failure_tilt:.1f} deg" if failure_tilt is not None else f"standing at {tilt.max():.1f} deg"
+    fig, ax = output.figure("simulated time (s)", "tilt (deg)", f"Tilting, {title}")
     ax.plot(t, tilt, "k-", label="tilt")
     right = ax.twinx()
     right.semilogy(t, np.maximum(ek, 1e-12), "r-", label="kinetic energy (J)")
