@@ -4,6 +4,7 @@ import math
 import os
 import xml.etree.ElementTree as ET
 
+import numpy as np
 import pytest
 from conftest import load_script
 from lattice import R, material
@@ -12,7 +13,7 @@ from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
 from yade import O
 from yade.wrapper import JointSetGeometry, SmoothJointMat
 
-from toppling import bonding, boundary, joints, paraview, scene
+from toppling import bonding, boundary, columns, joints, paraview, scene
 
 
 def read(path):
@@ -138,7 +139,10 @@ def test_first_crack_reads_the_peaks_and_interpolates_the_tilt(empty_scene, tmp_
         sigma.append(O.interactions[0, 1].phys.bondSigmaMax)
     (tmp_path / "summary.json").write_text(json.dumps({"stages": stages}))
     peaks = first_crack.elastic_peaks(str(tmp_path))
-    assert [t for t, _ in peaks] == [26.0, 28.0] and [s[0] for _, s in peaks] == pytest.approx(sigma, rel=1e-6)
+    assert [t for t, *_ in peaks] == [26.0, 28.0] and [s[0] for _, s, _ in peaks] == pytest.approx(sigma, rel=1e-6)
+    assert peaks[-1][2][0] == pytest.approx([0.0, R], abs=1e-3 * R)  # the bond's midpoint, between the discs
+    layout = columns.ColumnLayout(toe_x=0.1, width=0.05, heights=[0.1, 0.1])
+    assert first_crack.places(np.array([[0.09, 0.012], [0.01, 0.05]]), layout) == "A-1 1.2 cm, B-2 5.0 cm"
     assert first_crack.crossing_tilt(peaks, 0.25 * sigma[0] + 0.75 * sigma[1]) == pytest.approx(27.5)
     assert first_crack.crossing_tilt(peaks, 0.5 * sigma[0]) == 26.0  # cracked by the first stage: an upper bound
     assert first_crack.crossing_tilt(peaks, 2 * sigma[1]) is None
