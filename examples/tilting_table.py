@@ -37,6 +37,13 @@ surface y = 0, columns standing along +y, the toe at the right, the slope to the
   neighbour, touching it at a corner, or a thin sliver on a mu 0.23 joint slides off at 13 deg
   plus what the main joints' friction holds, long before the slope topples (measured: the top
   block of column G-7, touching F-6 over 8 mm, slid at 28 deg, and so did a 4 cm sliver on G-7).
+  These rules keep 24 of the 26-27 block boundaries of layouts 1-3 (the example prints the count).
+  Neither rule leaves a cut in the toe column A-1; `sliding_toe` = 1 keeps its cuts (the ideal
+  model's base joint at 0.67 cm: the thesis' sliding zone at the toe, and Table 5-8's case III puts
+  a base joint there "to provide the required deformation in the slope to fail"). Measured at
+  R 1-4 mm (docs/tilting_table.md, "A sliding toe"): the ideal model at 85 kPa fails at 34 deg
+  with it as without it, at Table 5-2's 209 kPa it stands to 44 deg, and the random layout 3 stands
+  to 25 deg either way; default 0.
 * Micro-parameters: Tables 5-2 and 5-3, except the porosity (0.18: the packer does not lock in
   overlap, see README) and what the calibration below changes.
 * `shrink_overlaps` = 1 shrinks each disc by half its largest overlap before bonding. The
@@ -66,8 +73,11 @@ Without local damping (lines 84-94, 101-104) 85 kPa fails R 1-4 mm at 34, 24, 28
 the stage in which the most stressed bond reaches the strength (docs/tilting_table.md, "Without
 local damping"). At R 1-4 mm the random model (lines 105-109) stands to 25 deg at 159 kPa, at
 65 kPa (159 scaled as the ideal model's 209 -> 85) and with 10 times stiffer joints alike: it is
-held by its joints and block geometry, not by its rock (docs/tilting_table.md, "The random
-model at R 1-4 mm").
+held by its joints and block geometry, not by its rock, leaning on its two continuous toe
+columns (A-1 moves 0.01 mm, B-2 0.2-0.4 mm by 25 deg; docs/tilting_table.md, "The random model
+at R 1-4 mm"). One run whose bonds do not break (line 111, 209 kPa) gives the failure tilt of
+every weaker strength: the slope fails in the stage in which the second most stressed bond
+reaches the strength (docs/tilting_table.md, "One run with bonds that do not break").
 
 Loading: the discs within Rmax of the table are fixed in x and y (§5.2.4.2); gravity is turned
 by the tilt (Fig 5-7). The model first comes to rest on the level table, then the tilt rises

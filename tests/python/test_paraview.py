@@ -101,14 +101,19 @@ def test_resumed_series_continues_numbering_and_displacements(empty_scene, tmp_p
     assert [e.get("file") for e in entries] == ["discs_00000.vtu", "discs_00001.vtu"]
 
 
-def test_bond_stress_history_reads_the_series_back(empty_scene, tmp_path, capsys):
-    """scripts/bond_stress_history.py: per snapshot the stage's tilt, bond counts and the peak stress."""
-    history = load_script("bond_stress_history")
+def pulled_bond() -> None:
+    """Two fixed discs bonded, the upper one moving off along +y: a bond in growing tension."""
     rock = material()
     O.bodies.append([scene.disc((0, 0), R, rock, fixed=True), scene.disc((0, 2 * R), R, rock, fixed=True)])
     O.engines = scene.engines(gravity=(0, 0, 0))
     bonding.bond_within_gap(1e-9)
     boundary.move([1], (0, 1e-3))
+
+
+def test_bond_stress_history_reads_the_series_back(empty_scene, tmp_path, capsys):
+    """scripts/bond_stress_history.py: per snapshot the stage's tilt, bond counts and the peak stress."""
+    history = load_script("bond_stress_history")
+    pulled_bond()
     scene.run_steps(5)  # pulled: the bond carries tension
     series = paraview.ParaViewSeries(str(tmp_path / "paraview"))
     series.snapshot()
@@ -125,11 +130,7 @@ def test_first_crack_reads_the_peaks_and_interpolates_the_tilt(empty_scene, tmp_
     """scripts/first_crack.py: the peak bond stress of each stage end (the bond pulled further
     at the second), and the tilt at which it reaches a strength between them."""
     first_crack = load_script("first_crack")
-    rock = material()
-    O.bodies.append([scene.disc((0, 0), R, rock, fixed=True), scene.disc((0, 2 * R), R, rock, fixed=True)])
-    O.engines = scene.engines(gravity=(0, 0, 0))
-    bonding.bond_within_gap(1e-9)
-    boundary.move([1], (0, 1e-3))
+    pulled_bond()
     series = paraview.ParaViewSeries(str(tmp_path / "paraview"))
     stages, sigma = [], []
     for tilt in (26.0, 28.0):
