@@ -75,9 +75,10 @@ local damping"). At R 1-4 mm the random model (lines 105-109) stands to 25 deg a
 65 kPa (159 scaled as the ideal model's 209 -> 85) and with 10 times stiffer joints alike: it is
 held by its joints and block geometry, not by its rock, leaning on its two continuous toe
 columns (A-1 moves 0.01 mm, B-2 0.2-0.4 mm by 25 deg; docs/tilting_table.md, "The random model
-at R 1-4 mm"). One run whose bonds do not break (line 111, 209 kPa) gives the failure tilt of
-every weaker strength: the slope fails in the stage in which the second most stressed bond
-reaches the strength (docs/tilting_table.md, "One run with bonds that do not break").
+at R 1-4 mm"). A run whose bonds do not break (209 kPa, lines 111, 114-117) bounds the failure tilt
+of every weaker strength from below: the slope fails in the stage in which the second most
+stressed bond reaches the strength, or one or two stages later (docs/tilting_table.md, "One run
+with bonds that do not break").
 
 Loading: the discs within Rmax of the table are fixed in x and y (§5.2.4.2); gravity is turned
 by the tilt (Fig 5-7). The model first comes to rest on the level table, then the tilt rises
