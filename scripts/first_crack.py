@@ -1,5 +1,5 @@
-"""The largest bond stress of tilting-table runs stage by stage while no bond has broken, and
-the tilt at which it reaches a strength: the first crack, read off the elastic stages.
+"""The largest bond stresses of tilting-table runs stage by stage while (almost) no bond has
+broken, and the tilts at which they reach a strength: the first cracks, read off the elastic stages.
 
     source scripts/env.sh; /usr/bin/python3 scripts/first_crack.py results/tilting_table/<run> [...] [--strength 85,100]
 
@@ -41,9 +41,14 @@ def elastic_peaks(folder: str) -> list[tuple[float, list[float], np.ndarray]]:
         if tilt is None or len(bonds["state"]) - len(intact) > FEW_BROKEN:
             break
         top = intact[np.argsort(bonds["sigma_max"][intact])[::-1][:RANKS]]
-        ends_of = lambda c: [grid.GetPoint(grid.GetCell(int(c)).GetPointId(i))[:2] for i in (0, 1)]
-        peaks.append((tilt, list(bonds["sigma_max"][top]), np.array([np.mean(ends_of(c), axis=0) for c in top])))
+        peaks.append((tilt, list(bonds["sigma_max"][top]), np.array([midpoint(grid, c) for c in top])))
     return peaks
+
+
+def midpoint(grid, cell: int) -> np.ndarray:
+    """(x, y) of the middle of a bond line of a bonds .vtu."""
+    ids = grid.GetCell(int(cell)).GetPointIds()
+    return np.mean([grid.GetPoint(ids.GetId(i))[:2] for i in (0, 1)], axis=0)
 
 
 def crossing_tilt(peaks: Sequence[tuple], strength: float, rank: int = 1) -> Optional[float]:
@@ -57,7 +62,7 @@ def crossing_tilt(peaks: Sequence[tuple], strength: float, rank: int = 1) -> Opt
     return None
 
 
-def run_record_layout(folder: str) -> Optional[ColumnLayout]:
+def layout_of(folder: str) -> Optional[ColumnLayout]:
     """The run's column layout, from its checkpoint (None without one)."""
     path = os.path.join(folder, "checkpoint.json")
     if not os.path.exists(path):
@@ -81,7 +86,7 @@ def row(folder: str, peaks: list[tuple], strengths: Sequence[float], tilts: Sequ
     for s in strengths:
         reached = [crossing_tilt(peaks, s, rank) if peaks else None for rank in range(1, RANKS + 1)]
         cells.append(" / ".join(last if t is None else f"{t:.1f}" for t in reached))
-    layout = run_record_layout(folder)
+    layout = layout_of(folder)
     cells.append(places(peaks[-1][2], layout) if peaks and layout else "-")
     failure = record.get("failure_tilt_deg")
     return (f"| {os.path.basename(folder.rstrip('/'))} | {1e3 * inputs.get('rmin', np.nan):g}–"
