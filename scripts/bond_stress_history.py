@@ -54,6 +54,11 @@ def cell_arrays(grid) -> dict[str, np.ndarray]:
     return {cells.GetArrayName(i): vtk_to_numpy(cells.GetArray(i)) for i in range(cells.GetNumberOfArrays())}
 
 
+def bond_pairs(grid) -> np.ndarray:
+    """The two disc (point) indices of each bond line of a bonds .vtu, one row per bond."""
+    return vtk_to_numpy(grid.GetCells().GetConnectivityArray()).reshape(-1, 2)
+
+
 def bond_arrays(path: str) -> dict[str, np.ndarray]:
     return cell_arrays(read_grid(path))
 

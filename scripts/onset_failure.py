@@ -19,7 +19,7 @@ import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from bond_stress_history import cell_arrays, read_grid, snapshots  # noqa: E402
+from bond_stress_history import bond_pairs, cell_arrays, read_grid, snapshots  # noqa: E402
 from toppling import analysis  # noqa: E402
 from toppling.columns import ColumnLayout  # noqa: E402
 
@@ -51,8 +51,7 @@ def onset(folder: str) -> dict:
     reference = np.array(state["reference"])
     now, discs = disc_arrays(at_time(folder, "discs", failed["time"]))
     grid = read_grid(at_time(folder, "bonds", failed["time"]))
-    pairs = vtk_to_numpy(grid.GetCells().GetConnectivityArray()).reshape(-1, 2)
-    broken = pairs[cell_arrays(grid)["state"] > 1]
+    broken = bond_pairs(grid)[cell_arrays(grid)["state"] > 1]
     index = {i: n for n, i in enumerate(state["ids"])}
     speed = np.linalg.norm(discs["velocity"][:, :2], axis=1)
     tops = {label: index[i] for label, i in zip(state["points"]["labels"], state["points"]["ids"])}
