@@ -180,7 +180,8 @@ readParamsFromTable(arrangement="ideal", rmin=1e-3, rmax=4e-3, porosity=0.18, se
                     settle_damping=0.7, chunk=0.02, rest_speed=1e-3, fail_displacement=0.05, max_stage_time=2.0,
                     fail_columns=1, post_failure_time=0.3, timestep_safety=0.5,
                     bond_tensile_strength=0.0, main_joint_friction=0.0, base_joint_friction=0.0, shrink_overlaps=1,
-                    joint_stiffness_scale=1.0, bond_gap=0.0, sliding_toe=0, resume=-1, checkpoint_every=600.0,
+                    joint_stiffness_scale=1.0, bond_gap=0.0, sliding_toe=0, cut_rules=1, toe_column=1, resume=-1,
+                    checkpoint_every=600.0,
                     out="results/tilting_table", noTableOk=True)
 from yade.params import table  # noqa: E402  (filled by readParamsFromTable)
 
@@ -217,6 +218,10 @@ if table.shrink_overlaps not in (0, 1):
     raise ValueError(f"shrink_overlaps = {table.shrink_overlaps} is invalid: it must be 0 or 1")
 if table.sliding_toe not in (0, 1):
     raise ValueError(f"sliding_toe = {table.sliding_toe} is invalid: it must be 0 or 1")
+if table.cut_rules not in (0, 1):
+    raise ValueError(f"cut_rules = {table.cut_rules} is invalid: it must be 0 (every block boundary a joint) or 1")
+if table.toe_column not in (0, 1):
+    raise ValueError(f"toe_column = {table.toe_column} is invalid: it must be 0 (no toe column) or 1")
 if not 0 < table.joint_stiffness_scale <= 1:
     raise ValueError(f"joint_stiffness_scale = {table.joint_stiffness_scale} is invalid: it must be in (0, 1] "
                      "(1: Table 5-3's joint stiffnesses)")
@@ -279,6 +284,8 @@ def build() -> columns.ColumnLayout:
                                  seed=table.seed).discs
     if table.shrink_overlaps:
         discs = packing.shrink_overlaps(discs)
+    if not table.toe_column:  # the slope as the R 2-8 mm packing leaves it: no bonded disc in A-1
+        discs = [d for d in discs if layout.column_of(d[0]) != 1]
     bonded_rock(discs, ((0, 0), (layout.toe_x, 0)))
     (kn_main, mu_main), (kn_base, mu_base), gap = TABLE_5_3[table.arrangement]
     main = SmoothJointMat(normalStiffness=kn_main, shearStiffness=kn_main,
@@ -286,9 +293,10 @@ def build() -> columns.ColumnLayout:
     base = SmoothJointMat(normalStiffness=kn_base, shearStiffness=kn_base,
                           frictionAngle=math.atan(mu_base), gap=gap, thickness=T)
     cuts = cross_joint_heights(layout)
-    cross = layout.cross_joints(cuts, BLOCK_LENGTH, sliding_toe=bool(table.sliding_toe))
-    print(f"cross joints: {len(cross.segmentStarts)} of {sum(map(len, cuts.values()))} cuts kept by the layout's rules",
-          flush=True)
+    cross = layout.cross_joints(cuts, BLOCK_LENGTH, sliding_toe=bool(table.sliding_toe),
+                                every_cut=not table.cut_rules)
+    rules = " by the layout's rules" if table.cut_rules else " (cut_rules 0)"
+    print(f"cross joints: {len(cross.segmentStarts)} of {sum(map(len, cuts.values()))} cuts kept{rules}", flush=True)
     joints.install_joints([(layout.main_joints(), main), (cross, base)],
                           lo=(-1, -1), hi=(layout.toe_x + 1, 1))
     return layout
@@ -326,7 +334,8 @@ inputs = output.table_inputs(table)
 checkpoint = monitor.Checkpoint(table.out)
 # parameters newer than some checkpoints: the value those runs had
 ADDED = {"shrink_overlaps": 0, "joint_stiffness_scale": 1.0, "fail_columns": 1, "bond_gap": 0.0, "settle_damping": 0.7,
-         "stage_rate": 0.0, "layout_seed": 1, "sliding_toe": 0}
+         "stage_rate": 0.0, "layout_seed": 1, "sliding_toe": 0, "cut_rules": 1,
+         "toe_column": 1}
 if checkpoint.continues(inputs, table.resume, free=FREE, added=ADDED):
     state = checkpoint.load()
     print(f"resuming {table.out} in its {state['phase']['name']} phase at {state['tilt']} deg "

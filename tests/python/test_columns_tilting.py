@@ -32,6 +32,8 @@ def test_layout_outline_columns_and_joints():
     assert sorted(y for _, y in single.segmentStarts) == pytest.approx([0.03, 0.06])
     toe = layout.cross_joints({1: [0.02, 0.09, 0.12], 2: [0.03]}, block_length=0.04, sliding_toe=True)
     assert sorted(y for _, y in toe.segmentStarts) == pytest.approx([0.02, 0.03, 0.09])  # 0.12 is above column 1
+    stacked = layout.cross_joints({1: [0.02, 0.09, 0.12], 2: [0.095, 0.24], 3: [0.185]}, 0.04, every_cut=True)
+    assert sorted(y for _, y in stacked.segmentStarts) == pytest.approx([0.02, 0.09, 0.095, 0.185, 0.24])
     with pytest.raises(ValueError, match="width"):
         columns.ColumnLayout(0.1, 0.0, [0.1])
     with pytest.raises(ValueError, match="block_length"):
