@@ -37,7 +37,11 @@ surface y = 0, columns standing along +y, the toe at the right, the slope to the
   neighbour, touching it at a corner, or a thin sliver on a mu 0.23 joint slides off at 13 deg
   plus what the main joints' friction holds, long before the slope topples (measured: the top
   block of column G-7, touching F-6 over 8 mm, slid at 28 deg, and so did a 4 cm sliver on G-7).
-  These rules keep 24 of the 26-27 block boundaries of layouts 1-3 (the example prints the count).
+  These rules keep 24 of the 30, 35 and 35 block boundaries of layouts 1-3 (the example prints the
+  count); `cut_rules` = 0 turns them off, every block boundary a joint (default 1). `toe_column`
+  = 0 takes the toe column A-1's discs out before bonding, the slope as the R 2-8 mm packing leaves
+  it (no bonded disc in A-1; default 1). Measured at R 1-4 mm: docs/tilting_table.md, "Without the
+  layout's rules, and to 31 deg".
   Neither rule leaves a cut in the toe column A-1; `sliding_toe` = 1 keeps its cuts (the ideal
   model's base joint at 0.67 cm: the thesis' sliding zone at the toe, and Table 5-8's case III puts
   a base joint there "to provide the required deformation in the slope to fail"). Measured at
