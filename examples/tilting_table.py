@@ -282,8 +282,12 @@ def bonded_rock(discs: list[tuple[float, float, float]], table_surface: tuple) -
     return ids
 
 
+def column_layout() -> columns.ColumnLayout:
+    return columns.ColumnLayout.under_profile(COLUMNS * WIDTH, WIDTH, COLUMNS, profile)
+
+
 def build() -> columns.ColumnLayout:
-    layout = columns.ColumnLayout.under_profile(COLUMNS * WIDTH, WIDTH, COLUMNS, profile)
+    layout = column_layout()
     discs = packing.pack_polygon(geometry.region(layout.section()), table.rmin, table.rmax, table.porosity,
                                  seed=table.seed).discs
     if table.shrink_overlaps:
