@@ -77,13 +77,13 @@ Without local damping (lines 84-94, 101-104) 85 kPa fails R 1-4 mm at 34, 24, 28
 the stage in which the most stressed bond reaches the strength (docs/tilting_table.md, "Without
 local damping"). At R 1-4 mm the random model (lines 105-109) stands to 25 deg at 159 kPa, at
 65 kPa (159 scaled as the ideal model's 209 -> 85) and with 10 times stiffer joints alike: it is
-held by its toe column B-2 (0.2-0.4 mm by 25 deg) and its rock (layout 1: largest bond stress
-143.5 kPa of 159 at 31 deg), not by the layout's rules (`cut_rules` 0 stands to 31 deg) nor by
-A-1 (`toe_column` 0: the same motions to 25 deg; docs/tilting_table.md, "The random model at
-R 1-4 mm", "Without the layout's rules, and to 31 deg"). A run whose bonds do not break (209 kPa, lines 111, 114-117) bounds the failure tilt
-of every weaker strength from below: the slope fails in the stage in which the second most
-stressed bond reaches the strength, or one or two stages later (docs/tilting_table.md, "One run
-with bonds that do not break").
+held by its rock (layout 1: largest bond stress 143.5 kPa of 159 at 31 deg) and, by its motions,
+its toe column B-2 (0.2-0.4 mm by 25 deg; not tested), not by the layout's rules (`cut_rules` 0
+stands to 31 deg) nor by A-1 (`toe_column` 0: the same motions to 25 deg; docs/tilting_table.md,
+"The random model at R 1-4 mm", "Without the layout's rules, and to 31 deg"). A run whose bonds
+do not break (209 kPa, lines 111, 114-117) bounds the failure tilt of every weaker strength from
+below: the slope fails in the stage in which the second most stressed bond reaches the strength,
+or one or two stages later (docs/tilting_table.md, "One run with bonds that do not break").
 
 Loading: the discs within Rmax of the table are fixed in x and y (§5.2.4.2); gravity is turned
 by the tilt (Fig 5-7). The model first comes to rest on the level table, then the tilt rises
@@ -343,8 +343,7 @@ inputs = output.table_inputs(table)
 checkpoint = monitor.Checkpoint(table.out)
 # parameters newer than some checkpoints: the value those runs had
 ADDED = {"shrink_overlaps": 0, "joint_stiffness_scale": 1.0, "fail_columns": 1, "bond_gap": 0.0, "settle_damping": 0.7,
-         "stage_rate": 0.0, "layout_seed": 1, "sliding_toe": 0, "cut_rules": 1,
-         "toe_column": 1}
+         "stage_rate": 0.0, "layout_seed": 1, "sliding_toe": 0, "cut_rules": 1, "toe_column": 1}
 if checkpoint.continues(inputs, table.resume, free=FREE, added=ADDED):
     state = checkpoint.load()
     print(f"resuming {table.out} in its {state['phase']['name']} phase at {state['tilt']} deg "

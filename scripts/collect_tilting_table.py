@@ -25,8 +25,7 @@ CALIBRATION = ("bond_tensile_strength", "main_joint_friction", "base_joint_frict
 NUMERICS = {"timestep_safety": 0.5, "seed": 1, "joint_stiffness_scale": 1.0}  # defaults (older summaries lack keys)
 # inputs newer than some summaries: the value those runs had
 ADDED = {"shrink_overlaps": 0, "fail_columns": 1, "bond_gap": 0.0, "damping": 0.7, "settle_damping": 0.7,
-         "stage_rate": 0.0, "layout_seed": 1, "sliding_toe": 0,
-         "cut_rules": 1, "toe_column": 1}
+         "stage_rate": 0.0, "layout_seed": 1, "sliding_toe": 0, "cut_rules": 1, "toe_column": 1}
 RUN_ONLY = ("out", "resume", "checkpoint_every", "max_tilt", "post_failure_time")  # no part of the model
 SIZE_TOLERANCE_DEG = 2.0
 TARGET_TOLERANCE_DEG = 3.0  # issue 4: the thesis' failure tilt +- 3 deg
