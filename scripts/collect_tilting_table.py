@@ -25,7 +25,8 @@ CALIBRATION = ("bond_tensile_strength", "main_joint_friction", "base_joint_frict
 NUMERICS = {"timestep_safety": 0.5, "seed": 1, "joint_stiffness_scale": 1.0}  # defaults (older summaries lack keys)
 # inputs newer than some summaries: the value those runs had
 ADDED = {"shrink_overlaps": 0, "fail_columns": 1, "bond_gap": 0.0, "damping": 0.7, "settle_damping": 0.7,
-         "stage_rate": 0.0, "layout_seed": 1, "sliding_toe": 0, "cut_rules": 1, "toe_column": 1}
+         "stage_rate": 0.0, "layout_seed": 1, "sliding_toe": 0, "cut_rules": 1, "toe_column": 1,
+         "joint_pieces": 0}
 RUN_ONLY = ("out", "resume", "checkpoint_every", "max_tilt", "post_failure_time")  # no part of the model
 SIZE_TOLERANCE_DEG = 2.0
 TARGET_TOLERANCE_DEG = 3.0  # issue 4: the thesis' failure tilt +- 3 deg
@@ -205,6 +206,7 @@ def group_name(key: SeedGroup) -> str:
     joints += ", sliding toe" if model["sliding_toe"] else ""
     joints += ", every block boundary a joint" if not model["cut_rules"] else ""
     joints += ", no toe column" if not model["toe_column"] else ""
+    joints += ", joints between pieces of rock" if model["joint_pieces"] else ""
     strength = model["bond_tensile_strength"]  # 0: Table 5-2's
     strength = f" {strength / 1e3:g} kPa" if strength else ""
     gap = f", bond gap {1e3 * key.gap:g} mm" if key.gap != TABLE_BOND_GAP else ""

@@ -27,13 +27,17 @@ def joint_normal(geometry: JointSetGeometry) -> tuple[float, float, float]:
     return (-math.sin(a), math.cos(a), 0.0)
 
 
-def install_joints(sets: Sequence[tuple[JointSetGeometry, SmoothJointMat]], lo, hi) -> JointSystem:
+def install_joints(sets: Sequence[tuple[JointSetGeometry, SmoothJointMat]], lo, hi,
+                   pieces: bool = True) -> JointSystem:
     """Install joint sets (geometry, mechanics) in the current scene, within the box lo..hi.
 
     Every interaction whose centre-to-centre segment crosses a joint loses its bond and gets
-    the smooth joint of that set (thesis §3.2.4), oriented by the geometry's dip; discs are given the block (band of every
-    persistent set) they lie in, so contacts that form later between blocks are smooth joints
-    too. Returns the scene's JointSystem.
+    the smooth joint of that set (thesis §3.2.4), oriented by the geometry's dip. Discs are
+    given the block they lie in, so contacts that form later between blocks are smooth joints
+    too: with ``pieces`` the piece of rock (``assign_pieces``), else only the band of every
+    persistent set, which leaves a block that slides along a joint of explicit segments or
+    with rock bridges to make plain, interlocking disc contacts with the rock it slides over.
+    Returns the scene's JointSystem.
     """
     ip2 = rock_functor()
     system = ip2.joints if ip2.joints is not None else JointSystem()
@@ -51,8 +55,30 @@ def install_joints(sets: Sequence[tuple[JointSetGeometry, SmoothJointMat]], lo, 
     for i, j in pairs:  # the Ip2 now makes them smooth joints
         O.interactions.erase(i, j)
         utils.createInteraction(i, j)
+    if pieces:
+        assign_pieces(system)
     limit_timestep()
     return system
+
+
+def assign_pieces(system: JointSystem) -> None:
+    """Split the blocks of ``system`` into pieces of rock: discs joined by a chain of intact
+    bonds within one block. Joints are what cut bonds, so a piece is bounded by joints; a disc
+    without an intact bond is a piece of its own, as it was a block's disc before."""
+    blocks = list(system.blockOfBody)
+    root = list(range(len(blocks)))
+
+    def find(i: int) -> int:
+        while root[i] != i:
+            root[i] = root[root[i]]
+            i = root[i]
+        return i
+
+    for I in O.interactions:
+        if I.isReal and getattr(I.phys, "bondState", 0) == 1 and blocks[I.id1] == blocks[I.id2] >= 0:
+            root[find(I.id1)] = find(I.id2)
+    labels: dict[int, int] = {}
+    system.blockOfBody = [labels.setdefault(find(i), len(labels)) if b >= 0 else -1 for i, b in enumerate(blocks)]
 
 
 def cut_bonds(geometry: JointSetGeometry, lo, hi) -> int:
