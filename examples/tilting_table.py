@@ -48,6 +48,10 @@ surface y = 0, columns standing along +y, the toe at the right, the slope to the
   R 1-4 mm (docs/tilting_table.md, "A sliding toe"): the ideal model at 85 kPa fails at 34 deg
   with it as without it, at Table 5-2's 209 kPa it stands to 44 deg, and the random layout 3 stands
   to 25 deg either way; default 0.
+* Contacts that form after the joints are installed are smooth joints between different pieces
+  of rock (`joint_pieces` = 1, default): a block sliding on a cross joint meets the rock below
+  through the joint, not as interlocking discs. 0 tells blocks apart by the main joints only, as
+  every table line before 123 ran (docs/tilting_table.md, "Joints between pieces of rock").
 * Micro-parameters: Tables 5-2 and 5-3, except the porosity (0.18: the packer does not lock in
   overlap, see README) and what the calibration below changes.
 * `shrink_overlaps` = 1 shrinks each disc by half its largest overlap before bonding. The

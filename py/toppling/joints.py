@@ -63,8 +63,8 @@ def install_joints(sets: Sequence[tuple[JointSetGeometry, SmoothJointMat]], lo, 
 
 def assign_pieces(system: JointSystem) -> None:
     """Split the blocks of ``system`` into pieces of rock: discs joined by a chain of intact
-    bonds within one block. Joints are what cut bonds, so a piece is bounded by joints; a disc
-    without an intact bond is a piece of its own, as it was a block's disc before."""
+    bonds within one block. Joints are what cut bonds, so a piece is bounded by joints. A disc
+    without an intact bond in its block is a piece of its own: its new contacts are joints."""
     blocks = list(system.blockOfBody)
     root = list(range(len(blocks)))
 
