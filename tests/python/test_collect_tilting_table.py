@@ -151,3 +151,14 @@ def test_one_finer_seed_against_several_coarser_is_undecided_and_a_seed_that_sto
 def test_a_failure_tilt_within_tolerance_with_an_undecided_phi_is_undecided():
     runs = {**seeds(0.0025, [33.0, 34.0, 35.0], [5.0, 25.0, 15.0]), **seeds(0.004, [34.0, 33.0, 35.0], [15.0, 14.0, 16.0])}
     assert collect.size_over_seeds(runs)[0].endswith("| +0.0 ± 0.8 | +0.0 ± 5.8 | undecided |")
+
+
+def test_a_joint_friction_and_joints_between_pieces_name_their_own_seed_group():
+    runs = {f"s{seed}{tag}": summary(0.008, tilt, [20.0], arrangement="random", seed=seed, **inputs)
+            for tag, inputs, tilts in (("", {}, (15.0, 25.0)),
+                                       ("_mu", {"base_joint_friction": 0.23, "joint_pieces": 1}, (17.0, 37.0)))
+            for seed, tilt in zip((1, 2), tilts)}
+    assert collect.seed_spread(runs) == [
+        "| random 130 kPa R 2–8 mm, safety 0.5 | 1, 2 | 15.0–25.0 | 20.0 ± 7.1 | 0 of 2 | 20.0–20.0 |",
+        "| random 130 kPa R 2–8 mm, safety 0.5, joints between pieces of rock, base joint friction 0.23 | 1, 2 | 17.0–37.0 | "
+        "27.0 ± 14.1 | 1 of 2 | 20.0–20.0 |"]
