@@ -79,12 +79,13 @@ seed 1 but anywhere in 20-42 deg over nine seeds, and at R 1-2.5 mm at 38-44 deg
 Without local damping (lines 84-94, 101-104) 85 kPa fails R 1-4 mm at 34, 24, 28, 34, 34, <= 26,
 34, <= 26, 32 deg over seeds 1-9 and R 1-2.5 mm at 36, 34, 32, 38, 42 deg over seeds 1-5: in
 the stage in which the most stressed bond reaches the strength (docs/tilting_table.md, "Without
-local damping"). At R 1-4 mm the random model (lines 105-109) stands to 25 deg at 159 kPa, at
-65 kPa (159 scaled as the ideal model's 209 -> 85) and with 10 times stiffer joints alike: it is
-held by its rock (layout 1: largest bond stress 143.5 kPa of 159 at 31 deg) and, by its motions,
-its toe column B-2 (0.2-0.4 mm by 25 deg; not tested), not by the layout's rules (`cut_rules` 0
-stands to 31 deg) nor by A-1 (`toe_column` 0: the same motions to 25 deg; docs/tilting_table.md,
-"The random model at R 1-4 mm", "Without the layout's rules, and to 31 deg"). A run whose bonds
+local damping"). At R 1-4 mm the random model with blocks told apart by the main joints only
+(lines 105-109, 120, 121) stands to 25 deg at 159 kPa, at 65 kPa (159 scaled as the ideal model's
+209 -> 85) and with 10 times stiffer joints alike, and layout 1 to 31 deg with or without the
+layout's rules. Between pieces (`joint_pieces` 1) layout 1 fails at 35 deg through its rock from
+the toe with the rules (line 123) and at 19 deg without them (`cut_rules` 0, line 133), its top
+blocks sliding off their cross joints (docs/tilting_table.md, "The random model at R 1-4 mm
+between pieces"). A run whose bonds
 do not break (209 kPa, lines 111, 114-117) bounds the failure tilt of every weaker strength from
 below: the slope fails in the stage in which the second most stressed bond reaches the strength,
 or one or two stages later (docs/tilting_table.md, "One run with bonds that do not break").
