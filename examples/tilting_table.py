@@ -190,8 +190,8 @@ readParamsFromTable(arrangement="ideal", rmin=1e-3, rmax=4e-3, porosity=0.18, se
                     settle_damping=0.7, chunk=0.02, rest_speed=1e-3, fail_displacement=0.05, max_stage_time=2.0,
                     fail_columns=1, post_failure_time=0.3, timestep_safety=0.5,
                     bond_tensile_strength=0.0, main_joint_friction=0.0, base_joint_friction=0.0, shrink_overlaps=1,
-                    joint_stiffness_scale=1.0, bond_gap=0.0, sliding_toe=0, cut_rules=1, toe_column=1, joint_pieces=1, resume=-1,
-                    checkpoint_every=600.0,
+                    joint_stiffness_scale=1.0, bond_gap=0.0, sliding_toe=0, cut_rules=1, toe_column=1, joint_pieces=1,
+                    resume=-1, checkpoint_every=600.0,
                     out="results/tilting_table", noTableOk=True)
 from yade.params import table  # noqa: E402  (filled by readParamsFromTable)
 
@@ -233,7 +233,8 @@ if table.cut_rules not in (0, 1):
 if table.toe_column not in (0, 1):
     raise ValueError(f"toe_column = {table.toe_column} is invalid: it must be 0 (no toe column) or 1")
 if table.joint_pieces not in (0, 1):
-    raise ValueError(f"joint_pieces = {table.joint_pieces} is invalid: it must be 0 (blocks by the main joints only) or 1")
+    raise ValueError(f"joint_pieces = {table.joint_pieces} is invalid: "
+                     "it must be 0 (blocks by the main joints only) or 1")
 if not 0 < table.joint_stiffness_scale <= 1:
     raise ValueError(f"joint_stiffness_scale = {table.joint_stiffness_scale} is invalid: it must be in (0, 1] "
                      "(1: Table 5-3's joint stiffnesses)")

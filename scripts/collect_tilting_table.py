@@ -207,8 +207,8 @@ def group_name(key: SeedGroup) -> str:
     joints += ", every block boundary a joint" if not model["cut_rules"] else ""
     joints += ", no toe column" if not model["toe_column"] else ""
     joints += ", joints between pieces of rock" if model["joint_pieces"] else ""
-    joints += "".join(f", {name.replace('_', ' ')} {model[name]:g}" for name in ("main_joint_friction", "base_joint_friction")
-                      if model.get(name))  # 0: Table 5-3's
+    frictions = ("main_joint_friction", "base_joint_friction")  # 0: Table 5-3's
+    joints += "".join(f", {name.replace('_', ' ')} {model[name]:g}" for name in frictions if model.get(name))
     strength = model["bond_tensile_strength"]  # 0: Table 5-2's
     strength = f" {strength / 1e3:g} kPa" if strength else ""
     gap = f", bond gap {1e3 * key.gap:g} mm" if key.gap != TABLE_BOND_GAP else ""

@@ -172,7 +172,6 @@ def test_without_pieces_a_block_sliding_on_segments_interlocks(empty_scene):
     assert mean_x(block) - start < 3 * R
 
 
-
 def test_bad_turn_interval_is_rejected():
     law = Law2_ScGeom_SmoothJointPhys_SmoothJoint()
     with pytest.raises(ValueError, match=r"Law2_ScGeom_SmoothJointPhys_SmoothJoint.turnInterval = 0 .*>= 1"):
