@@ -224,17 +224,11 @@ if table.stage_rate < 0:
     raise ValueError(f"stage_rate = {table.stage_rate} is invalid: it must be 0 (each step at once) or > 0 deg/s")
 if table.layout_seed != int(table.layout_seed) or table.layout_seed < 0:
     raise ValueError(f"layout_seed = {table.layout_seed} is invalid: it must be an integer >= 0")
-if table.shrink_overlaps not in (0, 1):
-    raise ValueError(f"shrink_overlaps = {table.shrink_overlaps} is invalid: it must be 0 or 1")
-if table.sliding_toe not in (0, 1):
-    raise ValueError(f"sliding_toe = {table.sliding_toe} is invalid: it must be 0 or 1")
-if table.cut_rules not in (0, 1):
-    raise ValueError(f"cut_rules = {table.cut_rules} is invalid: it must be 0 (every block boundary a joint) or 1")
-if table.toe_column not in (0, 1):
-    raise ValueError(f"toe_column = {table.toe_column} is invalid: it must be 0 (no toe column) or 1")
-if table.joint_pieces not in (0, 1):
-    raise ValueError(f"joint_pieces = {table.joint_pieces} is invalid: "
-                     "it must be 0 (blocks by the main joints only) or 1")
+SWITCHES = {"shrink_overlaps": "0 or 1", "sliding_toe": "0 or 1", "cut_rules": "0 (every block boundary a joint) or 1",
+            "toe_column": "0 (no toe column) or 1", "joint_pieces": "0 (blocks by the main joints only) or 1"}
+for name, valid in SWITCHES.items():
+    if getattr(table, name) not in (0, 1):
+        raise ValueError(f"{name} = {getattr(table, name)} is invalid: it must be {valid}")
 if not 0 < table.joint_stiffness_scale <= 1:
     raise ValueError(f"joint_stiffness_scale = {table.joint_stiffness_scale} is invalid: it must be in (0, 1] "
                      "(1: Table 5-3's joint stiffnesses)")

@@ -14,9 +14,9 @@ from collections import Counter
 from yade import O
 from yade.wrapper import ParallelBondPhys
 
-from toppling import bonding, joints
+from toppling import bonding, joints, scene
 
-STATES = {0: "never bonded", 1: "intact", 2: "broken in tension", 3: "broken in shear"}
+STATES = {0: "never bonded", 1: "intact", **{code: f"broken in {mode}" for code, mode in scene.BREAK_MODES.items()}}
 
 
 def xy(v) -> str:
