@@ -26,7 +26,7 @@ NUMERICS = {"timestep_safety": 0.5, "seed": 1, "joint_stiffness_scale": 1.0}  # 
 # inputs newer than some summaries: the value those runs had
 ADDED = {"shrink_overlaps": 0, "fail_columns": 1, "bond_gap": 0.0, "damping": 0.7, "settle_damping": 0.7,
          "stage_rate": 0.0, "layout_seed": 1, "sliding_toe": 0, "cut_rules": 1, "toe_column": 1,
-         "joint_pieces": 0}
+         "joint_pieces": 0, "arrest_time": 0.0}
 RUN_ONLY = ("out", "resume", "checkpoint_every", "max_tilt", "post_failure_time")  # no part of the model
 SIZE_TOLERANCE_DEG = 2.0
 TARGET_TOLERANCE_DEG = 3.0  # issue 4: the thesis' failure tilt +- 3 deg
@@ -327,6 +327,9 @@ def main(folder: str, patterns: Sequence[str] = ("*",)) -> None:
             f"none up to {fmt(s.get('stable_up_to_deg'))}"
         if s["stages"][-1].get("failed_by") == "max_stage_time":  # a creep rather than a collapse
             tilt += " (time limit)"
+        local = s.get("local_failures", [])
+        if local:  # failures that came to rest before the slope's (arrest_time > 0)
+            tilt += f" (local at {fmt([failure['tilt'] for failure in local])})"
         stable = [stage["tilt"] for stage in s["stages"] if stage["outcome"] == "equilibrium"]
         changed = [f"{knob} {inputs[knob]:g}" for knob in CALIBRATION if inputs.get(knob)] or ["Tables 5-2/5-3"]
         changed += [f"{knob} {value:g}" for knob, value in numerics(inputs).items() if value != NUMERICS[knob]]

@@ -119,6 +119,42 @@ def stage_outcome(now: np.ndarray, before: np.ndarray, reference: np.ndarray, el
     return None
 
 
+def on_table(groups: Sequence[Sequence[int]], floor: float) -> list[list[int]]:
+    """Each group's discs whose centre is above height ``floor`` (empty for a group that has left
+    the table: it falls on into the void and would never come to rest)."""
+    return [[i for i in group if O.bodies[i].state.pos[1] > floor] for group in groups]
+
+
+def fastest_speed(groups: Sequence[Sequence[int]], chunk: float, on_chunk: Optional[Callable[[], None]] = None) -> float:
+    """Run ``chunk`` simulated seconds and return the speed [m/s] of the fastest centroid of the
+    non-empty ``groups`` over it (0 if none is left)."""
+    groups = [group for group in groups if group]
+    before = centroids(groups) if groups else np.zeros((0, 2))
+    scene.run_checked(chunk, "the run after a failure")
+    if on_chunk:
+        on_chunk()
+    if not groups:
+        return 0.0
+    return float(np.linalg.norm(centroids(groups) - before, axis=1).max()) / chunk
+
+
+def run_arrest(watched: Sequence[Sequence[int]], floor: float, criteria: StageCriteria, arrest_time: float,
+               on_chunk: Optional[Callable[[], None]] = None, start: Optional[float] = None) -> Optional[float]:
+    """After a failing stage, run on at the same tilt until what is left of the ``watched``
+    groups on the table (above ``floor``) comes to rest, the fastest centroid slower than
+    rest_speed: the failure was local and arrested; return how long after ``start`` (the
+    failure; now by default) that took. None if the slope still moves ``arrest_time`` seconds
+    after the failure: it collapses. The parts still on the table are taken anew every chunk,
+    so a piece is judged until it drops below ``floor``."""
+    if arrest_time <= 0:
+        raise ValueError(f"arrest_time = {arrest_time} is invalid: it must be > 0 s")
+    start = O.time if start is None else start
+    while O.time - start < arrest_time:
+        if fastest_speed(on_table(watched, floor), criteria.chunk, on_chunk) < criteria.rest_speed:
+            return O.time - start
+    return None
+
+
 def run_stage(alpha_deg: float, watched: Sequence[Sequence[int]], reference: np.ndarray, criteria: StageCriteria,
               on_chunk: Optional[Callable[[], None]] = None, start: Optional[float] = None) -> str:
     """Tilt to ``alpha_deg`` and run until ``'equilibrium'`` or ``'failed'`` (see

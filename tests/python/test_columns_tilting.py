@@ -294,3 +294,22 @@ def test_kinetic_energy_above_the_floor_leaves_out_a_disc_fallen_below_it(empty_
     expected = 0.5 * s.mass * 0.3 ** 2 + 0.5 * s.inertia[2] * 2.0 ** 2
     assert tilting.kinetic_energy_above([up, down], floor=0.0) == pytest.approx(expected, rel=1e-12)
     assert tilting.kinetic_energy_above([up, down], floor=-1.0) == pytest.approx(utils.kineticEnergy(), rel=1e-12)
+
+
+@pytest.mark.parametrize("floor, expected", [(0.0, 0.101), (-10.0, None)])
+def test_a_failure_comes_to_rest_once_what_moves_has_dropped_off_the_table(empty_scene, floor, expected):
+    """A disc at rest and one falling freely from 5 cm: judged until it drops below ``floor``
+    (0.101 s = sqrt(2 h / g)), after which the disc at rest alone decides; with a floor it never
+    reaches, the failure is still moving at the time limit (None)."""
+    still, falling = (O.bodies.append(utils.sphere((x, 0.05, 0), 0.005, fixed=fixed))
+                      for x, fixed in ((0.0, True), (0.1, False)))
+    O.engines = scene.engines()
+    O.dt = 1e-5
+    criteria = tilting.StageCriteria(chunk=0.01, rest_speed=1e-3)
+    came_to_rest = tilting.run_arrest([[still], [falling]], floor, criteria, arrest_time=0.3)
+    if expected is None:
+        assert came_to_rest is None and O.time == pytest.approx(0.3, abs=criteria.chunk)
+    else:  # it rests at the end of the first chunk that starts with the disc below the floor
+        assert expected <= came_to_rest <= expected + 2 * criteria.chunk
+    with pytest.raises(ValueError, match="arrest_time = 0"):
+        tilting.run_arrest([[still]], floor, criteria, arrest_time=0)

@@ -23,7 +23,8 @@ def test_bad_tilt_parameters_stop_before_the_model_is_built(tmp_path, params):
                                                ("sliding_toe", 2, "0 or 1"),
                                                ("cut_rules", 2, "0 (every block boundary a joint) or 1"),
                                                ("toe_column", 2, "0 (no toe column) or 1"),
-                                               ("joint_pieces", 2, "0 (blocks by the main joints only) or 1")])
+                                               ("joint_pieces", 2, "0 (blocks by the main joints only) or 1"),
+                                               ("arrest_time", -1.0, "0 (the first failing stage is the failure) or > 0 s")])
 def test_a_numerical_parameter_out_of_range_stops_the_run(tmp_path, name, value, valid):
     proc = run_yade("examples/tilting_table.py", tmp_path, rmin=0.002, rmax=0.008, **{name: value})
     assert proc.returncode != 0
