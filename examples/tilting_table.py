@@ -159,16 +159,16 @@ at 1, 0.1 and 0.01 times (R 2-8 mm, lines 6, 45, 46), so keep 1 there.
 The failure tilt is the first stage that fails, or with `arrest_time` > 0 the first whose failure
 does not come to rest within `arrest_time` seconds (what is left of the column tops on the table,
 the fastest slower than `rest_speed`; parts that fell off the table fall on into the void and are
-not judged). A failure that comes to rest is local: the stage's log line says so (`came to rest
-... tilting on`), `local_failures` in the summary lists it, the discs that left the table are no
-longer watched, and the tilt goes on; `first_failure_tilt_deg` is the first failing stage either
-way. 0 (default) stops at the first failure, as every table line before 145 ran. Measured at
-R 1-4 mm: the random model's failures at 19 deg (lines 133 and 139) come to rest 0.86 and 1.02 s
-after failing (docs/tilting_table.md, "The random model at R 1-4 mm between pieces").
-The run then goes on for `post_failure_time`
-so the failure surface develops, and toppling.analysis finds it (failure points of the
-columns, fitted surface(s), phi), the zones, S/H and T/H, from the displacements since the last
-equilibrium and the cracks.
+not judged). A failure that comes to rest is not the slope's, however much of the slope fell: the
+stage's log line says so (`came to rest ... tilting on`), `arrested_failures` in the summary lists
+it, the discs that left the table are no longer watched, and the tilt goes on.
+`first_failure_tilt_deg` is the first failing stage either way: the thesis' failure tilt, the
+onset of failure ("Based on the physical test conditions at the onset of failure, the tilting
+angle was set at 19 deg", thesis §5.2, of the random model). 0 (default) stops at the first
+failure, as every table line before 145 ran. Measured: docs/tilting_table.md, "Failures that come
+to rest". The run then goes on for `post_failure_time` so the failure surface develops, and
+toppling.analysis finds it (failure points of the columns, fitted surface(s), phi), the zones,
+S/H and T/H, from the displacements since the last equilibrium and the cracks.
 
 A checkpoint is saved after every stage and every `checkpoint_every` wall seconds (a stage of
 the fine packing runs for hours). Running the same command again continues from it, in the
@@ -461,7 +461,7 @@ def collapse() -> dict:
 
 
 def arrested(stage: dict) -> None:
-    """The failure of ``stage`` came to rest: record it as local, and watch only what is left on
+    """The failure of ``stage`` came to rest: record it, and watch only what is left on
     the table (what fell off falls on for ever and would fail every later stage)."""
     kept = tilting.on_table(watched, OFF_TABLE)
     stage["left_table"] = [label for label, group in zip(watched_columns, kept) if not group]
@@ -478,7 +478,7 @@ def arrest_line(stage: dict) -> str:
     if after is None:
         return f"tilt {stage['tilt']:.1f} deg: still moving {table.arrest_time:g} s after the failure: the slope collapses"
     left = f"; {', '.join(stage['left_table'])} left the table" if stage["left_table"] else ""
-    return (f"tilt {stage['tilt']:.1f} deg: came to rest {after:.2f} s after the failure, a local failure "
+    return (f"tilt {stage['tilt']:.1f} deg: came to rest {after:.2f} s after the failure "
             f"({stage['discs_off_table']} discs off the table{left}, {stage['breaks']} breaks so far): tilting on")
 
 
@@ -518,7 +518,7 @@ while state["failure_tilt"] is None and state["tilt"] <= table.max_tilt + 1e-9:
         else:
             phase = next_stage()
         save_checkpoint()
-    if phase["name"] == "arrest":  # a failure that comes to rest within arrest_time is local: tilt on
+    if phase["name"] == "arrest":  # a failure that comes to rest within arrest_time is not the slope's: tilt on
         stage = state["stages"][-1]
         stage["came_to_rest_after_s"] = tilting.run_arrest(watched, OFF_TABLE, criteria, table.arrest_time,
                                                            on_chunk, start=phase["start"])
@@ -531,20 +531,20 @@ while state["failure_tilt"] is None and state["tilt"] <= table.max_tilt + 1e-9:
         print(arrest_line(stage), flush=True)
         save_checkpoint()
 
-def local_text(local: list[dict]) -> str:
-    """The local failures (failures that came to rest) for the run's last line."""
-    tilts = ", ".join(f"{failure['tilt']:.1f}" for failure in local)
-    return f" after local failures at {tilts} deg" if local else ""
+def arrested_text(arrested: list[dict]) -> str:
+    """The failures that came to rest, for the run's last line."""
+    tilts = ", ".join(f"{failure['tilt']:.1f}" for failure in arrested)
+    return f" after failures that came to rest at {tilts} deg" if arrested else ""
 
 
 def run_record() -> dict:
     """What every summary holds besides the failure: thesis targets, cracks, size and cost."""
     modes = scene.bond_law().breakMode
     failed = [stage for stage in state["stages"] if stage["outcome"] == "failed"]
-    local = [{key: stage[key] for key in ("tilt", "came_to_rest_after_s", "left_table", "discs_off_table", "breaks",
+    arrested = [{key: stage[key] for key in ("tilt", "came_to_rest_after_s", "left_table", "discs_off_table", "breaks",
                                          "moved_mm")} for stage in failed if stage.get("came_to_rest_after_s")]
     return dict(thesis=THESIS[table.arrangement], first_failure_tilt_deg=failed[0]["tilt"] if failed else None,
-                local_failures=local, tensile_breaks=modes.count(2), shear_breaks=modes.count(3),
+                arrested_failures=arrested, tensile_breaks=modes.count(2), shear_breaks=modes.count(3),
                 discs=len(ids), stages=state["stages"], steps=O.iter, simulated_time=O.time, wall_time=wall_time())
 
 
@@ -556,8 +556,8 @@ if state["failure_tilt"] is None:
                          phi_deg=[], s_over_h=None, t_over_h=None, top_displacement_mm=tops, **run_record())
     plots.tilt_history(table.out, state["energy"], points, None)
     plots.monitoring(table.out, points, points.labels[::2])
-    local = local_text(run_record()["local_failures"])
-    print(f"no failure up to max_tilt = {table.max_tilt} deg{local}: run again with a higher max_tilt; column tops moved "
+    arrested = arrested_text(run_record()["arrested_failures"])
+    print(f"no failure up to max_tilt = {table.max_tilt} deg{arrested}: run again with a higher max_tilt; column tops moved "
           + ", ".join(f"{label} {mm:.2f}" for label, mm in tops.items()) + " mm")
     raise SystemExit(0)
 if phase["name"] == "analysis" and O.time - state["stages"][-1]["time"] < table.post_failure_time:
@@ -614,7 +614,7 @@ if summary["failed_in_first_stage"]:
 distances = ", ".join(f"{name} {summary[key]:.2f}" if summary[key] is not None else f"{name} -"
                       for name, key in (("S/H", "s_over_h"), ("T/H", "t_over_h")))
 print(f"{table.arrangement}: failure tilt {state['failure_tilt']:.1f} deg (thesis "
-      f"{THESIS[table.arrangement]['failure_tilt_deg']}){local_text(summary['local_failures'])}, {phi_text} (thesis "
+      f"{THESIS[table.arrangement]['failure_tilt_deg']}){arrested_text(summary['arrested_failures'])}, {phi_text} (thesis "
       f"{THESIS[table.arrangement]['phi_deg']}), {distances}, "
       f"{summary['tensile_breaks']} tensile / {summary['shear_breaks']} shear breaks, {len(ids)} discs, "
       f"{summary['wall_time']:.0f} s")

@@ -327,9 +327,9 @@ def main(folder: str, patterns: Sequence[str] = ("*",)) -> None:
             f"none up to {fmt(s.get('stable_up_to_deg'))}"
         if s["stages"][-1].get("failed_by") == "max_stage_time":  # a creep rather than a collapse
             tilt += " (time limit)"
-        local = s.get("local_failures", [])
-        if local:  # failures that came to rest before the slope's (arrest_time > 0)
-            tilt += f" (local at {fmt([failure['tilt'] for failure in local])})"
+        arrested = s.get("arrested_failures", [])
+        if arrested:  # failures that came to rest before the slope's (arrest_time > 0)
+            tilt += f" (came to rest at {fmt([failure['tilt'] for failure in arrested])})"
         stable = [stage["tilt"] for stage in s["stages"] if stage["outcome"] == "equilibrium"]
         changed = [f"{knob} {inputs[knob]:g}" for knob in CALIBRATION if inputs.get(knob)] or ["Tables 5-2/5-3"]
         changed += [f"{knob} {value:g}" for knob, value in numerics(inputs).items() if value != NUMERICS[knob]]

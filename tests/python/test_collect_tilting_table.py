@@ -104,13 +104,13 @@ def test_failures_that_came_to_rest_are_named_beside_the_slopes(tmp_path, capsys
     run.update(stages=[{"tilt": 17.0, "outcome": "equilibrium"}, {"tilt": 19.0, "outcome": "failed"},
                        {"tilt": 21.0, "outcome": "failed"}, {"tilt": 23.0, "outcome": "equilibrium"},
                        {"tilt": 25.0, "outcome": "equilibrium"}, {"tilt": 27.0, "outcome": "failed"}],
-               local_failures=[{"tilt": 19.0}, {"tilt": 21.0}], thesis={"failure_tilt_deg": 19, "phi_deg": [14, 24]},
+               arrested_failures=[{"tilt": 19.0}, {"tilt": 21.0}], thesis={"failure_tilt_deg": 19, "phi_deg": [14, 24]},
                s_over_h=0.5, t_over_h=0.4, tensile_breaks=60, shear_breaks=2, discs=5955, wall_time=6000.0)
     (tmp_path / "random_arrest").mkdir()
     (tmp_path / "random_arrest" / "summary.json").write_text(json.dumps(run))
     collect.main(str(tmp_path))
     row = capsys.readouterr().out.splitlines()[2]
-    assert "arrest_time 2 |" in row and "| 25.0 | 27.0 (local at 19.0, 21.0) | 19.0 |" in row
+    assert "arrest_time 2 |" in row and "| 25.0 | 27.0 (came to rest at 19.0, 21.0) | 19.0 |" in row
 
 
 def test_patterns_keep_only_the_runs_they_name(tmp_path):
