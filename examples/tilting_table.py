@@ -447,6 +447,21 @@ def run_stage(alpha: float, phase: dict) -> str:
     return tilting.run_stage(alpha, watched, np.array(phase["reference"]), criteria, on_chunk, start=phase["start"])
 
 
+# analysis in the slope frame: x normal to the columns towards the face, y up the columns
+def analyse(tilt: float) -> dict:
+    """The failure of the last stage (at ``tilt``), from the displacements since the last
+    equilibrium and every crack so far."""
+    reference, now = np.array(state["reference"]), tilting.positions(ids)
+    index = {i: n for n, i in enumerate(ids)}
+    failed_at = state["stages"][-1]["time"]  # a top still moving since the failure
+    result = analysis.table_failure(
+        layout, reference, now, {label: index[i] for label, i in zip(points.labels, points.ids)},
+        lambda label: points.rate_since(label, failed_at) > table.rest_speed,
+        [tuple(p)[:2] for p in scene.bond_law().breakPosition], tilt, floor=OFF_TABLE,
+        band=2 * table.rmax, least_motion=table.rmin)  # the model's resolution
+    return {**result, "disp": now - reference, "now": now}
+
+
 def next_stage() -> dict:
     """The slope stands (or stands again): its positions are the reference of the next stage's."""
     state["reference"] = tilting.positions(ids).tolist()
@@ -467,6 +482,9 @@ def arrested(stage: dict) -> None:
     stage["left_table"] = [label for label, group in zip(watched_columns, kept) if not group]
     stage["discs_off_table"] = sum(O.bodies[i].state.pos[1] <= OFF_TABLE for i in ids)
     stage["breaks"] = len(scene.bond_law().breakMode)
+    failure = analyse(stage["tilt"])  # before the next stage moves the reference
+    stage["phi_deg"] = [plane.phi_deg for plane in failure["planes"]]
+    stage["s_over_h"], stage["t_over_h"] = failure["s_over_h"], failure["t_over_h"]
     watched[:] = [group for group in kept if group]
     watched_columns[:] = [label for label, group in zip(watched_columns, kept) if group]
     state["watched_columns"] = watched_columns
@@ -478,8 +496,10 @@ def arrest_line(stage: dict) -> str:
     if after is None:
         return f"tilt {stage['tilt']:.1f} deg: still moving {table.arrest_time:g} s after the failure: the slope collapses"
     left = f"; {', '.join(stage['left_table'])} left the table" if stage["left_table"] else ""
+    phi = ", ".join(f"{p:.1f}" for p in stage.get("phi_deg", [])) or "-"
     return (f"tilt {stage['tilt']:.1f} deg: came to rest {after:.2f} s after the failure "
-            f"({stage['discs_off_table']} discs off the table{left}, {stage['breaks']} breaks so far): tilting on")
+            f"({stage['discs_off_table']} discs off the table{left}, {stage['breaks']} breaks so far; "
+            f"phi {phi} deg): tilting on")
 
 
 # ---- stand on the level table, tilt slowly to start_tilt, then in stages until a stage fails ----
@@ -541,8 +561,9 @@ def run_record() -> dict:
     """What every summary holds besides the failure: thesis targets, cracks, size and cost."""
     modes = scene.bond_law().breakMode
     failed = [stage for stage in state["stages"] if stage["outcome"] == "failed"]
-    arrested = [{key: stage[key] for key in ("tilt", "came_to_rest_after_s", "left_table", "discs_off_table", "breaks",
-                                         "moved_mm")} for stage in failed if stage.get("came_to_rest_after_s")]
+    keys = ("tilt", "came_to_rest_after_s", "left_table", "discs_off_table", "breaks", "moved_mm", "phi_deg",
+            "s_over_h", "t_over_h")
+    arrested = [{key: stage.get(key) for key in keys} for stage in failed if stage.get("came_to_rest_after_s")]
     return dict(thesis=THESIS[table.arrangement], first_failure_tilt_deg=failed[0]["tilt"] if failed else None,
                 arrested_failures=arrested, tensile_breaks=modes.count(2), shear_breaks=modes.count(3),
                 discs=len(ids), stages=state["stages"], steps=O.iter, simulated_time=O.time, wall_time=wall_time())
@@ -572,20 +593,8 @@ if phase["name"] == "post":  # let the failure surface develop
     save_checkpoint()
 
 
-# ---- analysis (slope frame: x normal to the columns towards the face, y up the columns) ----
-def analyse() -> dict:
-    reference, now = np.array(state["reference"]), tilting.positions(ids)
-    index = {i: n for n, i in enumerate(ids)}
-    failed_at = state["stages"][-1]["time"]  # a top still moving over the post-failure run
-    result = analysis.table_failure(
-        layout, reference, now, {label: index[i] for label, i in zip(points.labels, points.ids)},
-        lambda label: points.rate_since(label, failed_at) > table.rest_speed,
-        [tuple(p)[:2] for p in scene.bond_law().breakPosition], state["failure_tilt"], floor=OFF_TABLE,
-        band=2 * table.rmax, least_motion=table.rmin)  # the model's resolution
-    return {**result, "disp": now - reference, "now": now}
-
-
-result = analyse()
+# ---- the failure's analysis, summary and figures ----
+result = analyse(state["failure_tilt"])
 law = scene.bond_law()
 summary = dict(
     failure_tilt_deg=state["failure_tilt"],
