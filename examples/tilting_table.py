@@ -551,6 +551,7 @@ while state["failure_tilt"] is None and state["tilt"] <= table.max_tilt + 1e-9:
         print(arrest_line(stage), flush=True)
         save_checkpoint()
 
+
 def arrested_text(arrested: list[dict]) -> str:
     """The failures that came to rest, for the run's last line."""
     tilts = ", ".join(f"{failure['tilt']:.1f}" for failure in arrested)

@@ -142,7 +142,7 @@ def run_arrest(watched: Sequence[Sequence[int]], floor: float, criteria: StageCr
                on_chunk: Optional[Callable[[], None]] = None, start: Optional[float] = None) -> Optional[float]:
     """After a failing stage, run on at the same tilt until what is left of the ``watched``
     groups on the table (above ``floor``) comes to rest, the fastest centroid slower than
-    rest_speed: the failure was local and arrested; return how long after ``start`` (the
+    rest_speed: the failure came to rest; return how long after ``start`` (the
     failure; now by default) that took. None if the slope still moves ``arrest_time`` seconds
     after the failure: it collapses. The parts still on the table are taken anew every chunk,
     so a piece is judged until it drops below ``floor``."""
