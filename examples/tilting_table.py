@@ -573,12 +573,12 @@ def run_record() -> dict:
 if state["failure_tilt"] is None:
     # stable throughout: say so in the summary (a sweep goes on), resumable with a higher max_tilt;
     # how far each column top has moved shows what holds the slope
-    tops = {label: 1e3 * points.total(label)[-1] for label in points.labels}
+    tops, record = {label: 1e3 * points.total(label)[-1] for label in points.labels}, run_record()
     output.write_summary(table.out, inputs, failure_tilt_deg=None, stable_up_to_deg=state["stages"][-1]["tilt"],
-                         phi_deg=[], s_over_h=None, t_over_h=None, top_displacement_mm=tops, **run_record())
+                         phi_deg=[], s_over_h=None, t_over_h=None, top_displacement_mm=tops, **record)
     plots.tilt_history(table.out, state["energy"], points, None)
     plots.monitoring(table.out, points, points.labels[::2])
-    arrested = arrested_text(run_record()["arrested_failures"])
+    arrested = arrested_text(record["arrested_failures"])
     print(f"no failure up to max_tilt = {table.max_tilt} deg{arrested}: run again with a higher max_tilt; column tops moved "
           + ", ".join(f"{label} {mm:.2f}" for label, mm in tops.items()) + " mm")
     raise SystemExit(0)

@@ -129,13 +129,11 @@ def fastest_speed(groups: Sequence[Sequence[int]], chunk: float, on_chunk: Optio
     """Run ``chunk`` simulated seconds and return the speed [m/s] of the fastest centroid of the
     non-empty ``groups`` over it (0 if none is left)."""
     groups = [group for group in groups if group]
-    before = centroids(groups) if groups else np.zeros((0, 2))
+    before = centroids(groups).reshape(-1, 2)
     scene.run_checked(chunk, "the run after a failure")
     if on_chunk:
         on_chunk()
-    if not groups:
-        return 0.0
-    return float(np.linalg.norm(centroids(groups) - before, axis=1).max()) / chunk
+    return float(np.linalg.norm(centroids(groups).reshape(-1, 2) - before, axis=1).max(initial=0.0)) / chunk
 
 
 def run_arrest(watched: Sequence[Sequence[int]], floor: float, criteria: StageCriteria, arrest_time: float,
