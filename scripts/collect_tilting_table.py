@@ -104,11 +104,13 @@ def same_gap(a: dict, b: dict) -> bool:
 
 
 def next_coarser(group: list[tuple[str, dict]], s: dict, bonding) -> Optional[tuple[str, dict]]:
-    """The run of ``group`` with the next larger rmax than ``s`` that ``bonding(s, run)`` accepts,
-    of the same numerical settings where there is one, and of those one that did not fail in
-    its first stage (a rerun from a lower start_tilt) where there is one."""
+    """The run of ``group`` of the same packing seed with the next larger rmax than ``s`` that
+    ``bonding(s, run)`` accepts, of the same numerical settings where there is one, and of those
+    one that did not fail in its first stage (a rerun from a lower start_tilt) where there is
+    one. Another seed's packing is no pair: seeds are compared on their means (size_over_seeds)."""
+    seed = numerics(s["inputs"])["seed"]
     coarser = [run for run in group if run[1]["inputs"]["rmax"] > s["inputs"]["rmax"]
-               and bonding(s["inputs"], run[1]["inputs"])]
+               and bonding(s["inputs"], run[1]["inputs"]) and numerics(run[1]["inputs"])["seed"] == seed]
     same = [run for run in coarser if numerics(run[1]["inputs"]) == numerics(s["inputs"])]
     return min(same or coarser, key=lambda run: (run[1]["inputs"]["rmax"], first_stage_failure(run[1]))) \
         if coarser else None

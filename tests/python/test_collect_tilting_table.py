@@ -79,6 +79,11 @@ def test_seeds_give_the_spread_of_one_model_and_a_finer_packing_meets_its_own_se
     assert collect.size_check(runs) == ["| fine_s2 vs s2 | 1.05 vs 1.05 | -1.0 | -1.5 | yes |"]
 
 
+def test_a_finer_packing_is_not_paired_with_another_seeds_coarse_packing():
+    runs = {"coarse_s2": summary(0.004, 24.0, [15.3], seed=2), "fine_s1": summary(0.0025, 30.0, [12.9])}
+    assert collect.size_check(runs) == []
+
+
 def test_a_seed_that_stands_counts_outside_the_target_and_outside_the_figures():
     runs = {"s1": summary(0.004, 36.0, [17.0]), "s2": summary(0.004, 30.0, [14.4], seed=2),
             "s3": {**summary(0.004, None, [], seed=3), "stable_up_to_deg": 44.0}}
