@@ -174,8 +174,12 @@ class SeedGroup(NamedTuple):
     joints: float  # joint_stiffness_scale
 
     def without_size(self) -> "SeedGroup":
-        """The model this group is a packing of."""
-        return self._replace(rmin=None, rmax=None)
+        """The model this group is a packing of, bonded with any gap."""
+        return self._replace(rmin=None, rmax=None, gap=None)
+
+    def bonding(self) -> dict:
+        """The same_gap / same_bond_density view of this group's inputs."""
+        return {"rmin": self.rmin, "rmax": self.rmax, "bond_gap": self.gap}
 
     def size_text(self) -> str:
         return f"R {1e3 * self.rmin:g}–{1e3 * self.rmax:g} mm"
@@ -272,29 +276,42 @@ def size_over_seeds(runs: dict[str, dict]) -> list[str]:
     groups = seed_groups(runs)
     lines = []
     for key, group in groups.items():
-        coarser = [k for k in groups if k.without_size() == key.without_size() and k.rmax > key.rmax]
-        if not coarser:
-            continue
-        coarse_key = min(coarser, key=lambda k: k.rmax)
-        partner = groups[coarse_key]
-        if max(len(group), len(partner)) < 2:
-            continue  # one seed each: size_check's pair
-        sides = [failed_seeds(g) for g in (group, partner)]
-        tilts = [[s["failure_tilt_deg"] for s in side] for side in sides]
-        phis = [[s["phi_deg"][0] for s in side if s["phi_deg"]] for side in sides]
-        cells = []
-        for g, side, t, p in zip((group, partner), sides, tilts, phis):
-            stood = len(g) - len(side)
-            extra = f", {stood} stood or bounded" if stood else ""
-            cells.append(f"{len(side)} of {len(g)}{extra}: {stats_text(t)}, φ {stats_text(p)}")
-        tilt_text, tilt_ok = mean_difference(*tilts)
-        phi_text, phi_ok = mean_difference(*phis)
-        verdict = ("yes" if tilt_ok == phi_ok == "yes" else "no" if "no" in (tilt_ok, phi_ok)
-                   else phi_ok if tilt_ok == "yes" else tilt_ok)  # an undecided phi leaves it undecided
-        lines.append(f"| {group_name(key)} vs {coarse_key.size_text()} | "
-                     f"{cells[0]} | {cells[1]} | "
-                     f"{tilt_text} | {phi_text} | {verdict} |")
+        for coarse_key in coarser_partners(groups, key):
+            lines += size_over_seeds_row(key, group, coarse_key, groups[coarse_key])
     return lines
+
+
+def coarser_partners(groups: dict[SeedGroup, list[dict]], key: SeedGroup) -> list[SeedGroup]:
+    """The next coarser packing of ``key``'s model and numerical settings of the same bond gap,
+    and that of the same bond density where it is another group."""
+    coarser = [k for k in groups if k.without_size() == key.without_size() and k.rmax > key.rmax]
+    partners = []
+    for bonding in (same_gap, same_bond_density):
+        matching = [k for k in coarser if bonding(key.bonding(), k.bonding())]
+        if matching:
+            partners.append(min(matching, key=lambda k: k.rmax))
+    return list(dict.fromkeys(partners))
+
+
+def size_over_seeds_row(key: SeedGroup, group: list[dict], coarse_key: SeedGroup, partner: list[dict]) -> list[str]:
+    """The row of size_over_seeds for one pair of seed groups; none with one seed on each side."""
+    if max(len(group), len(partner)) < 2:
+        return []  # one seed each: size_check's pair
+    sides = [failed_seeds(g) for g in (group, partner)]
+    tilts = [[s["failure_tilt_deg"] for s in side] for side in sides]
+    phis = [[s["phi_deg"][0] for s in side if s["phi_deg"]] for side in sides]
+    cells = []
+    for g, side, t, p in zip((group, partner), sides, tilts, phis):
+        stood = len(g) - len(side)
+        extra = f", {stood} stood or bounded" if stood else ""
+        cells.append(f"{len(side)} of {len(g)}{extra}: {stats_text(t)}, φ {stats_text(p)}")
+    tilt_text, tilt_ok = mean_difference(*tilts)
+    phi_text, phi_ok = mean_difference(*phis)
+    verdict = ("yes" if tilt_ok == phi_ok == "yes" else "no" if "no" in (tilt_ok, phi_ok)
+               else phi_ok if tilt_ok == "yes" else tilt_ok)  # an undecided phi leaves it undecided
+    coarse = coarse_key.size_text()
+    coarse += f", bond gap {1e3 * coarse_key.gap:g} mm" if coarse_key.gap != key.gap else ""
+    return [f"| {group_name(key)} vs {coarse} | {cells[0]} | {cells[1]} | {tilt_text} | {phi_text} | {verdict} |"]
 
 
 def joint_stiffness_check(runs: dict[str, dict]) -> list[str]:

@@ -167,6 +167,19 @@ def test_one_finer_seed_against_several_coarser_is_undecided_and_a_seed_that_sto
     assert collect.size_over_seeds({**seeds(0.0025, [42.0], [15.0]), **seeds(0.004, [36.0], [17.0])}) == []
 
 
+def test_seed_means_are_compared_at_the_same_bond_gap_and_at_the_same_bond_density():
+    coarse = seeds(0.004, [34.0, 24.0, 28.0], [13.7, 15.3, 16.2])
+    fine_table_gap = seeds(0.0025, [36.0, 34.0, 32.0], [15.6, 15.1, 1.9])
+    # R 0.625-2.5 mm bonds as many neighbours per disc as R 1-4 mm at 1.05 mm with 1.05 * 3.125 / 5 mm
+    fine_dense = seeds(0.0025, [30.0, 34.0, 28.0], [12.9, 16.3, 15.3], bond_gap=0.65625e-3)
+    rows = collect.size_over_seeds({**coarse, **{f"t{k}": s for k, s in fine_table_gap.items()}, **fine_dense})
+    assert len(rows) == 2
+    assert rows[0].startswith("| ideal 130 kPa R 0.625–2.5 mm, safety 0.5 vs R 1–4 mm |")
+    assert rows[0].endswith("| +5.3 ± 3.1 | -4.2 ± 4.5 | undecided |")
+    assert "bond gap 0.65625 mm" in rows[1] and "vs R 1–4 mm, bond gap 1.05 mm |" in rows[1]
+    assert rows[1].endswith("| +2.0 ± 3.4 | -0.2 ± 1.2 | undecided |")
+
+
 def test_a_failure_tilt_within_tolerance_with_an_undecided_phi_is_undecided():
     runs = {**seeds(0.0025, [33.0, 34.0, 35.0], [5.0, 25.0, 15.0]), **seeds(0.004, [34.0, 33.0, 35.0], [15.0, 14.0, 16.0])}
     assert collect.size_over_seeds(runs)[0].endswith("| +0.0 ± 0.8 | +0.0 ± 5.8 | undecided |")
