@@ -103,6 +103,11 @@ def same_gap(a: dict, b: dict) -> bool:
     return bond_gap(a) == bond_gap(b)
 
 
+# the ways a finer packing is compared with a coarser one: the same bond gap (Table 5-2's, as run)
+# and the same bonds per disc
+BONDINGS = (same_gap, same_bond_density)
+
+
 def next_coarser(group: list[tuple[str, dict]], s: dict, bonding) -> Optional[tuple[str, dict]]:
     """The run of ``group`` of the same packing seed with the next larger rmax than ``s`` that
     ``bonding(s, run)`` accepts, of the same numerical settings where there is one, and of those
@@ -139,7 +144,7 @@ def size_check(runs: dict[str, dict]) -> list[str]:
     lines = []
     for group in models.values():
         for name, s in group:
-            for bonding in (same_gap, same_bond_density):
+            for bonding in BONDINGS:
                 partner = next_coarser(group, s, bonding)
                 row = size_row(name, s, *partner) if partner else None
                 if row:
@@ -286,7 +291,7 @@ def coarser_partners(groups: dict[SeedGroup, list[dict]], key: SeedGroup) -> lis
     and that of the same bond density where it is another group."""
     coarser = [k for k in groups if k.without_size() == key.without_size() and k.rmax > key.rmax]
     partners = []
-    for bonding in (same_gap, same_bond_density):
+    for bonding in BONDINGS:
         matching = [k for k in coarser if bonding(key.bonding(), k.bonding())]
         if matching:
             partners.append(min(matching, key=lambda k: k.rmax))
