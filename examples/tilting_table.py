@@ -184,7 +184,6 @@ parameters stops the run (it names them) rather than be overwritten.
                                                     # the coarse (R 2-8 mm) pair only
 """
 import math
-from typing import Optional
 
 import numpy as np
 from yade import O
@@ -192,7 +191,7 @@ from yade.utils import readParamsFromTable
 from yade.wrapper import ParallelBondMat, SmoothJointMat
 
 from toppling import (analysis, bonding, boundary, columns, geometry, joints, monitor, output, packing, paraview,
-                      plots, scene, tilting)
+                      scene, tilt_report, tilt_run, tilting)
 
 readParamsFromTable(arrangement="ideal", rmin=1e-3, rmax=4e-3, porosity=0.18, seed=1, layout_seed=1,
                     start_tilt=20.0, step=1.0, max_tilt=45.0, tilt_rate=50.0, stage_rate=10.0, damping=0.0,
@@ -220,20 +219,8 @@ TABLE_5_3 = {  # main joints (kn = ks [N/m3], mu), base joints (kn = ks, mu), ga
 }
 THESIS = {"ideal": dict(failure_tilt_deg=35, phi_deg=[15]), "random": dict(failure_tilt_deg=19, phi_deg=[14, 24])}
 
-if table.checkpoint_every <= 0:
-    raise ValueError(f"checkpoint_every = {table.checkpoint_every} is invalid: it must be > 0 (wall seconds)")
-if not (0 <= table.start_tilt <= table.max_tilt < 90 and table.step > 0 and table.tilt_rate > 0):
-    raise ValueError(f"start_tilt = {table.start_tilt}, max_tilt = {table.max_tilt}, step = {table.step}, "
-                     f"tilt_rate = {table.tilt_rate} are invalid: they need 0 <= start_tilt <= max_tilt < 90 deg, "
-                     "step > 0 deg and tilt_rate > 0 deg/s")
+protocol = tilt_run.TiltProtocol.from_params(table)  # checks its own parameters
 scene.check_safety(table.timestep_safety, "timestep_safety")  # before the out folder is made
-scene.check_damping(table.damping, "damping")
-scene.check_damping(table.settle_damping, "settle_damping")
-if table.arrest_time < 0:
-    raise ValueError(f"arrest_time = {table.arrest_time} is invalid: it must be 0 (the first failing stage is the "
-                     "failure) or > 0 s")
-if table.stage_rate < 0:
-    raise ValueError(f"stage_rate = {table.stage_rate} is invalid: it must be 0 (each step at once) or > 0 deg/s")
 if table.layout_seed != int(table.layout_seed) or table.layout_seed < 0:
     raise ValueError(f"layout_seed = {table.layout_seed} is invalid: it must be an integer >= 0")
 SWITCHES = {"shrink_overlaps": "0 or 1", "sliding_toe": "0 or 1", "cut_rules": "0 (every block boundary a joint) or 1",
@@ -352,14 +339,13 @@ def column_top_bands(members: dict[int, list], depth: float) -> dict[str, list[i
 
 
 # ---- build or resume ----
-FREE = ("resume", "checkpoint_every", "max_tilt", "post_failure_time")  # may change in a continued run
 inputs = output.table_inputs(table)
 checkpoint = monitor.Checkpoint(table.out)
 # parameters newer than some checkpoints: the value those runs had
 ADDED = {"shrink_overlaps": 0, "joint_stiffness_scale": 1.0, "fail_columns": 1, "bond_gap": 0.0, "settle_damping": 0.7,
          "stage_rate": 0.0, "layout_seed": 1, "sliding_toe": 0, "cut_rules": 1, "toe_column": 1, "joint_pieces": 0,
          "arrest_time": 0.0}
-if checkpoint.continues(inputs, table.resume, free=FREE, added=ADDED):
+if checkpoint.continues(inputs, table.resume, free=tilt_run.FREE, added=ADDED):
     state = checkpoint.load()
     print(f"resuming {table.out} in its {state['phase']['name']} phase at {state['tilt']} deg "
           "(resume=0 starts afresh)", flush=True)
@@ -369,262 +355,11 @@ if checkpoint.continues(inputs, table.resume, free=FREE, added=ADDED):
 else:
     output.discard_summary(table.out)
     layout = build()
-    members = column_members(layout)
     ids = [b.id for b in O.bodies if b is not None]
     points = monitor.column_top_points(layout, bonding.rock(ids))  # a loose top disc may drop off the table
-    bands = column_top_bands(members, 2 * table.rmax)
-    state = {"inputs": inputs, "layout": vars(layout), "ids": ids, "watched": list(bands.values()),
-             "watched_columns": list(bands),
-             "tilt": table.start_tilt, "failure_tilt": None,
-             "reference": tilting.positions(ids).tolist(), "stages": [], "energy": []}
-ids, watched = state["ids"], state["watched"]
-# older checkpoints lack the labels: the column each watched group stands in when resumed
-watched_columns = state.get("watched_columns") or [analysis.column_label(layout.column_of(x)) if layout.column_of(x)
-                                                   else "?" for x, _ in tilting.centroids(watched)]
+    state = tilt_run.fresh_state(inputs, layout, ids, column_top_bands(column_members(layout), 2 * table.rmax),
+                                 table.start_tilt)
 series = paraview.ParaViewSeries(f"{table.out}/paraview", joints.rock_functor().joints.blockOfBody, state.get("series"))
-OFF_TABLE = -2 * table.rmax  # a disc whose centre fell below this height has left the table
-
-
-def slope_energy() -> float:
-    """The kinetic energy of the discs still on the table: a column fallen off it is no longer the slope's."""
-    return tilting.kinetic_energy_above(ids, OFF_TABLE)
-
-
-progress = monitor.Progress(energy=lambda: state["energy"][-1][2])  # what on_chunk just recorded
-earlier_wall_time = state.get("wall_time", 0.0)  # of the runs this one resumes
-last_save = progress.wall_time
-
-
-def wall_time() -> float:
-    return earlier_wall_time + progress.wall_time
-
-
-def save_checkpoint() -> None:
-    global last_save
-    state["points"], state["series"], state["wall_time"] = points.as_dict(), series.state(), wall_time()
-    checkpoint.save(state)
-    last_save = progress.wall_time
-
-
-KNOWN_LENGTH = {"ramp": (f"ramp to {table.start_tilt:g} deg", table.start_tilt / table.tilt_rate),
-                "arrest": ("after failure, at most", table.arrest_time),
-                "post": ("after failure", table.post_failure_time)}  # phases whose ETA is their end
-
-
-def on_chunk() -> None:
-    points.record()
-    state["energy"].append((O.time, tilting.current_tilt(), slope_energy()))  # the ramp shows as one
-    phase = state["phase"]
-    if phase["name"] in KNOWN_LENGTH:
-        label, length = KNOWN_LENGTH[phase["name"]]
-        progress(f"tilt {tilting.current_tilt():.1f} deg, {label}",
-                 remaining_time=max(0.0, length - (O.time - phase["start"])))
-    else:  # the level table's length is not known; a stage's ETA is to max_tilt, an upper bound (it ends at failure)
-        span = table.max_tilt - table.start_tilt
-        progress(f"tilt {tilting.current_tilt():.1f} deg", (state["tilt"] - table.start_tilt) / span if span > 0 else None)
-    if progress.wall_time - last_save > table.checkpoint_every:  # a stage of a fine packing runs for hours
-        save_checkpoint()
-
-
-def begin(name: str, start: Optional[float] = None, **extra) -> dict:
-    """Enter a phase of the run (level, ramp, stage, post); the checkpoint records it and when
-    it began (now by default), so that a resumed run continues it rather than starting it again."""
-    state["phase"] = dict(name=name, start=O.time if start is None else start, **extra)
-    return state["phase"]
-
-
-def stage_line(stage: dict) -> str:
-    """The log line of a finished stage (the ones `grep '^tilt'` and the README quote)."""
-    how = f" by {stage['failed_by']}" if "failed_by" in stage else ""
-    gone = stage.get("gone", [])
-    alone = f"; {', '.join(gone)} toppled off alone" if stage["outcome"] == "equilibrium" and gone else ""
-    return f"tilt {stage['tilt']:.1f} deg: {stage['outcome']}{how} (a column top moved {stage['moved_mm']:.1f} mm{alone})"
-
-
-def run_stage(alpha: float, phase: dict) -> str:
-    if table.stage_rate > 0 and alpha > table.start_tilt:  # the step as a ramp: no dynamic overshoot
-        tilting.ramp(alpha - table.step, alpha, table.step / table.stage_rate, on_chunk, start=phase["start"])
-    return tilting.run_stage(alpha, watched, np.array(phase["reference"]), criteria, on_chunk, start=phase["start"])
-
-
-# analysis in the slope frame: x normal to the columns towards the face, y up the columns
-def analyse(tilt: float) -> dict:
-    """The failure of the last stage (at ``tilt``), from the displacements since the last
-    equilibrium and every crack so far."""
-    reference, now = np.array(state["reference"]), tilting.positions(ids)
-    index = {i: n for n, i in enumerate(ids)}
-    failed_at = state["stages"][-1]["time"]  # a top still moving since the failure
-    result = analysis.table_failure(
-        layout, reference, now, {label: index[i] for label, i in zip(points.labels, points.ids)},
-        lambda label: points.rate_since(label, failed_at) > table.rest_speed,
-        [tuple(p)[:2] for p in scene.bond_law().breakPosition], tilt, floor=OFF_TABLE,
-        band=2 * table.rmax, least_motion=table.rmin)  # the model's resolution
-    return {**result, "disp": now - reference, "now": now}
-
-
-def next_stage() -> dict:
-    """The slope stands (or stands again): its positions are the reference of the next stage's."""
-    state["reference"] = tilting.positions(ids).tolist()
-    state["tilt"] += table.step
-    return begin("stage", reference=tilting.centroids(watched).tolist())
-
-
-def collapse() -> dict:
-    """The last stage's failure is the slope's: run on after it from the moment it failed."""
-    state["failure_tilt"] = state["tilt"]
-    return begin("post", start=state["stages"][-1]["time"])
-
-
-def arrested(stage: dict) -> None:
-    """The failure of ``stage`` came to rest: record it, and watch only what is left on
-    the table (what fell off falls on for ever and would fail every later stage)."""
-    kept = tilting.on_table(watched, OFF_TABLE)
-    stage["left_table"] = [label for label, group in zip(watched_columns, kept) if not group]
-    stage["discs_off_table"] = sum(O.bodies[i].state.pos[1] <= OFF_TABLE for i in ids)
-    stage["breaks"] = len(scene.bond_law().breakMode)
-    failure = analyse(stage["tilt"])  # before the next stage moves the reference
-    stage["phi_deg"] = [plane.phi_deg for plane in failure["planes"]]
-    stage["s_over_h"], stage["t_over_h"] = failure["s_over_h"], failure["t_over_h"]
-    watched[:] = [group for group in kept if group]
-    watched_columns[:] = [label for label, group in zip(watched_columns, kept) if group]
-    state["watched_columns"] = watched_columns
-
-
-def arrest_line(stage: dict) -> str:
-    """The log line (also `grep '^tilt'`) that says whether a failing stage's failure arrested."""
-    after = stage["came_to_rest_after_s"]
-    if after is None:
-        return f"tilt {stage['tilt']:.1f} deg: still moving {table.arrest_time:g} s after the failure: the slope collapses"
-    left = f"; {', '.join(stage['left_table'])} left the table" if stage["left_table"] else ""
-    phi = ", ".join(f"{p:.1f}" for p in stage.get("phi_deg", [])) or "-"
-    return (f"tilt {stage['tilt']:.1f} deg: came to rest {after:.2f} s after the failure "
-            f"({stage['discs_off_table']} discs off the table{left}, {stage['breaks']} breaks so far; "
-            f"phi {phi} deg): tilting on")
-
-
-# ---- stand on the level table, tilt slowly to start_tilt, then in stages until a stage fails ----
-for done in state["stages"]:  # a resumed run's log (yade-batch overwrites it) still lists every stage
-    print(stage_line(done), flush=True)
-    if "came_to_rest_after_s" in done:
-        print(arrest_line(done), flush=True)
-phase = state.get("phase") or begin("level", reference=tilting.centroids(watched).tolist())
-if phase["name"] == "level":
-    scene.set_local_damping(table.settle_damping)
-    if run_stage(0.0, phase) == "failed":
-        raise RuntimeError("the model does not stand on the level table: check the outline and the joints")
-    print(f"level table: equilibrium after {O.time - phase['start']:.3f} s", flush=True)
-    phase = begin("ramp")
-scene.set_local_damping(table.damping)  # from here on the loading's, also in a resumed run
-if phase["name"] == "ramp":
-    tilting.ramp(0.0, table.start_tilt, table.start_tilt / table.tilt_rate, on_chunk, start=phase["start"])
-    phase = begin("stage", reference=tilting.centroids(watched).tolist())
-while state["failure_tilt"] is None and state["tilt"] <= table.max_tilt + 1e-9:
-    if phase["name"] == "stage":
-        outcome = run_stage(state["tilt"], phase)
-        now, reference = tilting.centroids(watched), np.array(phase["reference"])
-        off = tilting.gone(now, reference, criteria)
-        judged = ~off if outcome == "equilibrium" else np.ones_like(off)  # a column gone off the table does not count
-        moved = float(np.linalg.norm(now - reference, axis=1)[judged].max(initial=0.0))
-        stage = {"tilt": state["tilt"], "outcome": outcome, "time": O.time, "steps": O.iter,
-                 "moved_mm": 1e3 * moved,  # a local collapse that came to rest shows here
-                 "gone": [c for c, gone in zip(watched_columns, off) if gone]}
-        if outcome == "failed":  # a collapse or a creep: whoever weighs the failure tilt needs to know which
-            stage["failed_by"] = "fail_displacement" if criteria.collapsed(off) else "max_stage_time"
-        state["stages"].append(stage)
-        print(stage_line(stage), flush=True)
-        series.snapshot()
-        if outcome == "failed":
-            phase = begin("arrest") if table.arrest_time > 0 else collapse()
-        else:
-            phase = next_stage()
-        save_checkpoint()
-    if phase["name"] == "arrest":  # a failure that comes to rest within arrest_time is not the slope's: tilt on
-        stage = state["stages"][-1]
-        stage["came_to_rest_after_s"] = tilting.run_arrest(watched, OFF_TABLE, criteria, table.arrest_time,
-                                                           on_chunk, start=phase["start"])
-        if stage["came_to_rest_after_s"] is None:
-            phase = collapse()
-        else:
-            arrested(stage)
-            series.snapshot()
-            phase = next_stage()
-        print(arrest_line(stage), flush=True)
-        save_checkpoint()
-
-
-def arrested_text(arrested: list[dict]) -> str:
-    """The failures that came to rest, for the run's last line."""
-    tilts = ", ".join(f"{failure['tilt']:.1f}" for failure in arrested)
-    return f" after failures that came to rest at {tilts} deg" if arrested else ""
-
-
-def run_record() -> dict:
-    """What every summary holds besides the failure: thesis targets, cracks, size and cost."""
-    modes = scene.bond_law().breakMode
-    failed = [stage for stage in state["stages"] if stage["outcome"] == "failed"]
-    keys = ("tilt", "came_to_rest_after_s", "left_table", "discs_off_table", "breaks", "moved_mm", "phi_deg",
-            "s_over_h", "t_over_h")
-    arrested = [{key: stage.get(key) for key in keys} for stage in failed if stage.get("came_to_rest_after_s")]
-    return dict(thesis=THESIS[table.arrangement], first_failure_tilt_deg=failed[0]["tilt"] if failed else None,
-                arrested_failures=arrested, tensile_breaks=modes.count(2), shear_breaks=modes.count(3),
-                discs=len(ids), stages=state["stages"], steps=O.iter, simulated_time=O.time, wall_time=wall_time())
-
-
-if state["failure_tilt"] is None:
-    # stable throughout: say so in the summary (a sweep goes on), resumable with a higher max_tilt;
-    # how far each column top has moved shows what holds the slope
-    tops, record = {label: 1e3 * points.total(label)[-1] for label in points.labels}, run_record()
-    output.write_summary(table.out, inputs, failure_tilt_deg=None, stable_up_to_deg=state["stages"][-1]["tilt"],
-                         phi_deg=[], s_over_h=None, t_over_h=None, top_displacement_mm=tops, **record)
-    plots.tilt_history(table.out, state["energy"], points, None)
-    plots.monitoring(table.out, points, points.labels[::2])
-    arrested = arrested_text(record["arrested_failures"])
-    print(f"no failure up to max_tilt = {table.max_tilt} deg{arrested}: run again with a higher max_tilt; column tops moved "
-          + ", ".join(f"{label} {mm:.2f}" for label, mm in tops.items()) + " mm")
-    raise SystemExit(0)
-if phase["name"] == "analysis" and O.time - state["stages"][-1]["time"] < table.post_failure_time:
-    # run again with a longer post_failure_time: the post-failure run goes on from where it began
-    phase = begin("post", start=state["stages"][-1]["time"])
-if phase["name"] == "post":  # let the failure surface develop
-    while O.time - phase["start"] < table.post_failure_time:
-        scene.run_checked(table.chunk, "the post-failure run")
-        on_chunk()
-    series.snapshot()
-    phase = begin("analysis")
-    save_checkpoint()
-
-
-# ---- the failure's analysis, summary and figures ----
-result = analyse(state["failure_tilt"])
-law = scene.bond_law()
-summary = dict(
-    failure_tilt_deg=state["failure_tilt"],
-    failed_in_first_stage=len(state["stages"]) == 1,  # then failure_tilt_deg is only an upper bound
-    phi_deg=[p.phi_deg for p in result["planes"]],
-    planes=len(result["planes"]), s_over_h=result["s_over_h"], t_over_h=result["t_over_h"],
-    zones={analysis.column_label(k + 1): z for k, z in enumerate(result["zones"])},
-    failure_points=result["failure_points"], slope_height=result["height"], **run_record())
-output.write_summary(table.out, inputs, **summary)
-
-phi_text = (f"phi = {', '.join(f'{p:.1f}' for p in summary['phi_deg'])} deg" if summary["phi_deg"]
-            else "no failure surface found")
-radii = [O.bodies[i].shape.radius for i in ids]
-view = plots.around(np.array(layout.section()), 0.15)  # discs fallen off the table stay out of it
-cracks = np.array([tuple(p)[:2] for p in law.breakPosition]).reshape(-1, 2)
-plots.slope(table.out, "slope_before", np.array(state["reference"]), radii, np.zeros((len(ids), 2)), [], [],
-            limits=view, title=f"{table.arrangement} arrangement at the last equilibrium")
-plots.slope(table.out, "slope_after", result["now"], radii, result["disp"], cracks, list(law.breakMode),
-            result["planes"], toe=(layout.toe_x, 0.0), limits=view,
-            title=f"{table.arrangement}: failed at {state['failure_tilt']:.1f} deg, {phi_text}")
-plots.tilt_history(table.out, state["energy"], points, state["failure_tilt"])
-plots.monitoring(table.out, points, points.labels[::2])
-if summary["failed_in_first_stage"]:
-    print(f"WARNING: the first stage ({table.start_tilt} deg) failed: the failure tilt is at most that; "
-          "rerun with a lower start_tilt")
-distances = ", ".join(f"{name} {summary[key]:.2f}" if summary[key] is not None else f"{name} -"
-                      for name, key in (("S/H", "s_over_h"), ("T/H", "t_over_h")))
-print(f"{table.arrangement}: failure tilt {state['failure_tilt']:.1f} deg (thesis "
-      f"{THESIS[table.arrangement]['failure_tilt_deg']}){arrested_text(summary['arrested_failures'])}, {phi_text} (thesis "
-      f"{THESIS[table.arrangement]['phi_deg']}), {distances}, "
-      f"{summary['tensile_breaks']} tensile / {summary['shear_breaks']} shear breaks, {len(ids)} discs, "
-      f"{summary['wall_time']:.0f} s")
+run = tilt_run.TiltRun(protocol, criteria, checkpoint, state, layout, points, series, table.rmin, table.rmax)
+run.run()
+tilt_report.report(run, table.out, THESIS[table.arrangement], table.arrangement)

@@ -1,0 +1,298 @@
+"""A tilting-table run to failure (thesis §5.2, Fig 5-7): the model comes to rest on the level
+table, gravity turns slowly to the start tilt, then by a step per stage until a stage fails;
+the failure may come to rest and the tilting go on; after the failure the run goes on so that
+the failure surface develops. The run is checkpointed after every stage and every
+``checkpoint_every`` wall seconds, and a run made from its checkpoint continues in the phase it
+stopped in (level, ramp, stage, arrest, post, analysis)."""
+from __future__ import annotations
+
+from dataclasses import dataclass, fields
+from typing import Any, Optional
+
+import numpy as np
+from yade import O
+
+from toppling import analysis, columns, monitor, paraview, scene, tilting
+
+# parameters that may change between a run and its continuation
+FREE = ("resume", "checkpoint_every", "max_tilt", "post_failure_time")
+
+
+@dataclass
+class TiltProtocol:
+    """How the table tilts: at ``tilt_rate`` [deg/s] to ``start_tilt`` [deg], then ``step``
+    [deg] per stage, each step ramped at ``stage_rate`` [deg/s] (0: at once), up to
+    ``max_tilt``. ``settle_damping``: NewtonIntegrator's local damping on the level table,
+    ``damping`` while it tilts. ``arrest_time`` [s]: a failure that comes to rest within it is
+    not the slope's and the tilt goes on (0: the first failing stage is the failure).
+    ``post_failure_time`` [s]: the run after the failure. ``checkpoint_every`` [wall s]."""
+    start_tilt: float
+    step: float
+    max_tilt: float
+    tilt_rate: float
+    stage_rate: float
+    damping: float
+    settle_damping: float
+    arrest_time: float
+    post_failure_time: float
+    checkpoint_every: float
+
+    def __post_init__(self):
+        if self.checkpoint_every <= 0:
+            raise ValueError(f"checkpoint_every = {self.checkpoint_every} is invalid: it must be > 0 (wall seconds)")
+        if not (0 <= self.start_tilt <= self.max_tilt < 90 and self.step > 0 and self.tilt_rate > 0):
+            raise ValueError(f"start_tilt = {self.start_tilt}, max_tilt = {self.max_tilt}, step = {self.step}, "
+                             f"tilt_rate = {self.tilt_rate} are invalid: they need 0 <= start_tilt <= max_tilt < 90 "
+                             "deg, step > 0 deg and tilt_rate > 0 deg/s")
+        scene.check_damping(self.damping, "damping")
+        scene.check_damping(self.settle_damping, "settle_damping")
+        if self.arrest_time < 0:
+            raise ValueError(f"arrest_time = {self.arrest_time} is invalid: it must be 0 (the first failing stage is "
+                             "the failure) or > 0 s")
+        if self.stage_rate < 0:
+            raise ValueError(f"stage_rate = {self.stage_rate} is invalid: it must be 0 (each step at once) or > 0 deg/s")
+        if self.post_failure_time < 0:
+            raise ValueError(f"post_failure_time = {self.post_failure_time} is invalid: it must be >= 0 s")
+
+    @classmethod
+    def from_params(cls, params: Any) -> "TiltProtocol":
+        """The protocol from an object with these attributes (``yade.params.table``)."""
+        return cls(**{f.name: getattr(params, f.name) for f in fields(cls)})
+
+
+def fresh_state(inputs: dict[str, Any], layout: columns.ColumnLayout, ids: list[int], bands: dict[str, list[int]],
+                start_tilt: float) -> dict[str, Any]:
+    """The checkpointed state of a run starting on a built scene: its discs ``ids`` and the
+    groups it watches, ``bands`` (discs near each column's top, by column label)."""
+    return {"inputs": inputs, "layout": vars(layout), "ids": ids, "watched": list(bands.values()),
+            "watched_columns": list(bands), "tilt": start_tilt, "failure_tilt": None,
+            "reference": tilting.positions(ids).tolist(), "stages": [], "energy": []}
+
+
+def stage_line(stage: dict) -> str:
+    """The log line of a finished stage (the ones `grep '^tilt'` and the README quote)."""
+    how = f" by {stage['failed_by']}" if "failed_by" in stage else ""
+    gone = stage.get("gone", [])
+    alone = f"; {', '.join(gone)} toppled off alone" if stage["outcome"] == "equilibrium" and gone else ""
+    return f"tilt {stage['tilt']:.1f} deg: {stage['outcome']}{how} (a column top moved {stage['moved_mm']:.1f} mm{alone})"
+
+
+def arrest_line(stage: dict, arrest_time: float) -> str:
+    """The log line (also `grep '^tilt'`) that says whether a failing stage's failure arrested."""
+    after = stage["came_to_rest_after_s"]
+    if after is None:
+        return f"tilt {stage['tilt']:.1f} deg: still moving {arrest_time:g} s after the failure: the slope collapses"
+    left = f"; {', '.join(stage['left_table'])} left the table" if stage["left_table"] else ""
+    phi = ", ".join(f"{p:.1f}" for p in stage.get("phi_deg", [])) or "-"
+    return (f"tilt {stage['tilt']:.1f} deg: came to rest {after:.2f} s after the failure "
+            f"({stage['discs_off_table']} discs off the table{left}, {stage['breaks']} breaks so far; "
+            f"phi {phi} deg): tilting on")
+
+
+def arrested_text(arrested: list[dict]) -> str:
+    """The failures that came to rest, for a run's last line."""
+    tilts = ", ".join(f"{failure['tilt']:.1f}" for failure in arrested)
+    return f" after failures that came to rest at {tilts} deg" if arrested else ""
+
+
+class TiltRun:
+    """One run of ``protocol`` on the scene of ``state`` (``fresh_state`` or a checkpoint's),
+    stages judged by ``criteria`` on the watched groups; ``points`` are the monitoring points,
+    ``series`` the ParaView series (a snapshot after every stage). ``rmin``, ``rmax``: the
+    packing's radii, which set the analysis' resolution and where the table ends (a disc whose
+    centre fell 2 Rmax below the table has left it)."""
+
+    def __init__(self, protocol: TiltProtocol, criteria: tilting.StageCriteria, checkpoint: monitor.Checkpoint,
+                 state: dict[str, Any], layout: columns.ColumnLayout, points: monitor.MonitoringPoints,
+                 series: paraview.ParaViewSeries, rmin: float, rmax: float):
+        self.protocol, self.criteria, self.checkpoint, self.state = protocol, criteria, checkpoint, state
+        self.layout, self.points, self.series, self.rmin, self.rmax = layout, points, series, rmin, rmax
+        self.off_table = -2 * rmax
+        self.ids, self.watched = state["ids"], state["watched"]
+        # older checkpoints lack the labels: the column each watched group stands in when resumed
+        self.watched_columns = state.get("watched_columns") or [
+            analysis.column_label(layout.column_of(x)) if layout.column_of(x) else "?"
+            for x, _ in tilting.centroids(self.watched)]
+        self.progress = monitor.Progress(energy=lambda: state["energy"][-1][2])  # what on_chunk just recorded
+        self.earlier_wall_time = state.get("wall_time", 0.0)  # of the runs this one resumes
+        self.last_save = self.progress.wall_time
+        p = protocol
+        self.known_length = {"ramp": (f"ramp to {p.start_tilt:g} deg", p.start_tilt / p.tilt_rate),
+                             "arrest": ("after failure, at most", p.arrest_time),
+                             "post": ("after failure", p.post_failure_time)}  # phases whose ETA is their end
+
+    @property
+    def failure_tilt(self) -> Optional[float]:
+        return self.state["failure_tilt"]
+
+    def wall_time(self) -> float:
+        return self.earlier_wall_time + self.progress.wall_time
+
+    def slope_energy(self) -> float:
+        """The kinetic energy of the discs still on the table: a column fallen off it is no longer the slope's."""
+        return tilting.kinetic_energy_above(self.ids, self.off_table)
+
+    def save_checkpoint(self) -> None:
+        state = self.state
+        state["points"], state["series"], state["wall_time"] = self.points.as_dict(), self.series.state(), self.wall_time()
+        self.checkpoint.save(state)
+        self.last_save = self.progress.wall_time
+
+    def on_chunk(self) -> None:
+        self.points.record()
+        self.state["energy"].append((O.time, tilting.current_tilt(), self.slope_energy()))  # the ramp shows as one
+        phase, p = self.state["phase"], self.protocol
+        if phase["name"] in self.known_length:
+            label, length = self.known_length[phase["name"]]
+            self.progress(f"tilt {tilting.current_tilt():.1f} deg, {label}",
+                          remaining_time=max(0.0, length - (O.time - phase["start"])))
+        else:  # the level table's length is not known; a stage's ETA is to max_tilt, an upper bound (it ends at failure)
+            span = p.max_tilt - p.start_tilt
+            self.progress(f"tilt {tilting.current_tilt():.1f} deg",
+                          (self.state["tilt"] - p.start_tilt) / span if span > 0 else None)
+        if self.progress.wall_time - self.last_save > p.checkpoint_every:  # a stage of a fine packing runs for hours
+            self.save_checkpoint()
+
+    def begin(self, name: str, start: Optional[float] = None, **extra) -> dict:
+        """Enter a phase of the run; the checkpoint records it and when it began (now by
+        default), so that a resumed run continues it rather than starting it again."""
+        self.state["phase"] = dict(name=name, start=O.time if start is None else start, **extra)
+        return self.state["phase"]
+
+    def run_stage(self, alpha: float, phase: dict) -> str:
+        p = self.protocol
+        if p.stage_rate > 0 and alpha > p.start_tilt:  # the step as a ramp: no dynamic overshoot
+            tilting.ramp(alpha - p.step, alpha, p.step / p.stage_rate, self.on_chunk, start=phase["start"])
+        return tilting.run_stage(alpha, self.watched, np.array(phase["reference"]), self.criteria, self.on_chunk,
+                                 start=phase["start"])
+
+    def analyse(self, tilt: float) -> dict:
+        """The failure of the last stage (at ``tilt``), from the displacements since the last
+        equilibrium and every crack so far, in the slope frame (x normal to the columns towards
+        the face, y up the columns)."""
+        reference, now = np.array(self.state["reference"]), tilting.positions(self.ids)
+        index = {i: n for n, i in enumerate(self.ids)}
+        failed_at = self.state["stages"][-1]["time"]  # a top still moving since the failure
+        result = analysis.table_failure(
+            self.layout, reference, now, {label: index[i] for label, i in zip(self.points.labels, self.points.ids)},
+            lambda label: self.points.rate_since(label, failed_at) > self.criteria.rest_speed,
+            [tuple(p)[:2] for p in scene.bond_law().breakPosition], tilt, floor=self.off_table,
+            band=2 * self.rmax, least_motion=self.rmin)  # the model's resolution
+        return {**result, "disp": now - reference, "now": now}
+
+    def next_stage(self) -> dict:
+        """The slope stands (or stands again): its positions are the reference of the next stage's."""
+        self.state["reference"] = tilting.positions(self.ids).tolist()
+        self.state["tilt"] += self.protocol.step
+        return self.begin("stage", reference=tilting.centroids(self.watched).tolist())
+
+    def collapse(self) -> dict:
+        """The last stage's failure is the slope's: run on after it from the moment it failed."""
+        self.state["failure_tilt"] = self.state["tilt"]
+        return self.begin("post", start=self.state["stages"][-1]["time"])
+
+    def arrested(self, stage: dict) -> None:
+        """The failure of ``stage`` came to rest: record it, and watch only what is left on
+        the table (what fell off falls on for ever and would fail every later stage)."""
+        kept = tilting.on_table(self.watched, self.off_table)
+        stage["left_table"] = [label for label, group in zip(self.watched_columns, kept) if not group]
+        stage["discs_off_table"] = sum(O.bodies[i].state.pos[1] <= self.off_table for i in self.ids)
+        stage["breaks"] = len(scene.bond_law().breakMode)
+        failure = self.analyse(stage["tilt"])  # before the next stage moves the reference
+        stage["phi_deg"] = [plane.phi_deg for plane in failure["planes"]]
+        stage["s_over_h"], stage["t_over_h"] = failure["s_over_h"], failure["t_over_h"]
+        self.watched[:] = [group for group in kept if group]
+        self.watched_columns[:] = [label for label, group in zip(self.watched_columns, kept) if group]
+        self.state["watched_columns"] = self.watched_columns
+
+    def judge_stage(self, phase: dict) -> dict:
+        """Run the stage of ``phase`` to its outcome and record it."""
+        state = self.state
+        outcome = self.run_stage(state["tilt"], phase)
+        now, reference = tilting.centroids(self.watched), np.array(phase["reference"])
+        off = tilting.gone(now, reference, self.criteria)
+        judged = ~off if outcome == "equilibrium" else np.ones_like(off)  # a column gone off the table does not count
+        moved = float(np.linalg.norm(now - reference, axis=1)[judged].max(initial=0.0))
+        stage = {"tilt": state["tilt"], "outcome": outcome, "time": O.time, "steps": O.iter,
+                 "moved_mm": 1e3 * moved,  # a local collapse that came to rest shows here
+                 "gone": [c for c, gone in zip(self.watched_columns, off) if gone]}
+        if outcome == "failed":  # a collapse or a creep: whoever weighs the failure tilt needs to know which
+            stage["failed_by"] = "fail_displacement" if self.criteria.collapsed(off) else "max_stage_time"
+        state["stages"].append(stage)
+        print(stage_line(stage), flush=True)
+        self.series.snapshot()
+        return stage
+
+    def judge_arrest(self, phase: dict) -> dict:
+        """Run on after the last stage's failure: it comes to rest (the tilt goes on) or not (the slope collapses)."""
+        stage = self.state["stages"][-1]
+        stage["came_to_rest_after_s"] = tilting.run_arrest(self.watched, self.off_table, self.criteria,
+                                                           self.protocol.arrest_time, self.on_chunk,
+                                                           start=phase["start"])
+        if stage["came_to_rest_after_s"] is None:
+            phase = self.collapse()
+        else:
+            self.arrested(stage)
+            self.series.snapshot()
+            phase = self.next_stage()
+        print(arrest_line(stage, self.protocol.arrest_time), flush=True)
+        return phase
+
+    def run(self) -> Optional[float]:
+        """Stand on the level table, tilt to start_tilt, then in stages until a stage fails
+        (then run post_failure_time after the failure) or max_tilt stands. Returns the failure
+        tilt [deg], None if the slope stood up to max_tilt."""
+        state, p = self.state, self.protocol
+        for done in state["stages"]:  # a resumed run's log (yade-batch overwrites it) still lists every stage
+            print(stage_line(done), flush=True)
+            if "came_to_rest_after_s" in done:
+                print(arrest_line(done, p.arrest_time), flush=True)
+        phase = state.get("phase") or self.begin("level", reference=tilting.centroids(self.watched).tolist())
+        if phase["name"] == "level":
+            scene.set_local_damping(p.settle_damping)
+            if self.run_stage(0.0, phase) == "failed":
+                raise RuntimeError("the model does not stand on the level table: check the outline and the joints")
+            print(f"level table: equilibrium after {O.time - phase['start']:.3f} s", flush=True)
+            phase = self.begin("ramp")
+        scene.set_local_damping(p.damping)  # from here on the loading's, also in a resumed run
+        if phase["name"] == "ramp":
+            tilting.ramp(0.0, p.start_tilt, p.start_tilt / p.tilt_rate, self.on_chunk, start=phase["start"])
+            phase = self.begin("stage", reference=tilting.centroids(self.watched).tolist())
+        while state["failure_tilt"] is None and state["tilt"] <= p.max_tilt + 1e-9:
+            if phase["name"] == "stage":
+                failed = self.judge_stage(phase)["outcome"] == "failed"
+                if not failed:
+                    phase = self.next_stage()
+                else:
+                    phase = self.begin("arrest") if p.arrest_time > 0 else self.collapse()
+                self.save_checkpoint()
+            if phase["name"] == "arrest":  # a failure that comes to rest within arrest_time is not the slope's
+                phase = self.judge_arrest(phase)
+                self.save_checkpoint()
+        if state["failure_tilt"] is not None:
+            self.run_after_failure(phase)
+        return state["failure_tilt"]
+
+    def run_after_failure(self, phase: dict) -> None:
+        """Let the failure surface develop for post_failure_time after the failure (also when a
+        finished run is run again with a longer one)."""
+        if phase["name"] == "analysis" and O.time - self.state["stages"][-1]["time"] < self.protocol.post_failure_time:
+            phase = self.begin("post", start=self.state["stages"][-1]["time"])
+        if phase["name"] == "post":
+            while O.time - phase["start"] < self.protocol.post_failure_time:
+                scene.run_checked(self.criteria.chunk, "the post-failure run")
+                self.on_chunk()
+            self.series.snapshot()
+            self.begin("analysis")
+            self.save_checkpoint()
+
+    def record(self) -> dict:
+        """What every summary holds besides the failure: cracks, failures that came to rest, size and cost."""
+        modes = scene.bond_law().breakMode
+        failed = [stage for stage in self.state["stages"] if stage["outcome"] == "failed"]
+        keys = ("tilt", "came_to_rest_after_s", "left_table", "discs_off_table", "breaks", "moved_mm", "phi_deg",
+                "s_over_h", "t_over_h")
+        arrested = [{key: stage.get(key) for key in keys} for stage in failed if stage.get("came_to_rest_after_s")]
+        return dict(first_failure_tilt_deg=failed[0]["tilt"] if failed else None, arrested_failures=arrested,
+                    tensile_breaks=modes.count(2), shear_breaks=modes.count(3), discs=len(self.ids),
+                    stages=self.state["stages"], steps=O.iter, simulated_time=O.time, wall_time=self.wall_time())

@@ -1,0 +1,97 @@
+"""toppling.tilt_run: the staged tilt of a block on a joint fails at the first stage past the
+joint's friction angle, also when the run stops at a stage and continues from its checkpoint."""
+import json
+import math
+import re
+
+import pytest
+from yade import O
+
+from toppling import columns, incline, monitor, tilt_report, tilt_run, tilting
+
+ROCK = dict(young=15e6, knKs=1.4, density=2340.0, bondYoung=15.9e6, bondKnKs=1.8, normalDamping=0.13,
+            bondNormalDamping=0.2)
+FRICTION_DEG = math.degrees(math.atan(0.4))  # 21.8 deg: stages at 17, 19, 21 stand, 23 slides
+CRITERIA = tilting.StageCriteria(chunk=0.02, rest_speed=1e-3, fail_displacement=2e-3, max_stage_time=0.3)
+
+
+class Series:
+    """The ParaView series' part the run uses, without files."""
+
+    def __init__(self, state=None):
+        self.snapshots = (state or {}).get("snapshots", 0)
+
+    def snapshot(self):
+        self.snapshots += 1
+
+    def state(self):
+        return {"snapshots": self.snapshots}
+
+
+def protocol(**changes) -> tilt_run.TiltProtocol:
+    return tilt_run.TiltProtocol(**{**dict(start_tilt=17.0, step=2.0, max_tilt=30.0, tilt_rate=50.0, stage_rate=10.0,
+                                           damping=0.5, settle_damping=0.5, arrest_time=0.0, post_failure_time=0.02,
+                                           checkpoint_every=600.0), **changes})
+
+
+def fresh_run(tmp_path, p: tilt_run.TiltProtocol) -> tilt_run.TiltRun:
+    setup = incline.build(0.1, 0.05, 0.012 / 2.5, 0.012, ROCK, FRICTION_DEG)
+    layout = columns.ColumnLayout(toe_x=0.15, width=0.1, heights=[0.05])  # the block as column A-1
+    state = tilt_run.fresh_state({"case": "block"}, layout, setup.block + setup.base, {"A-1": setup.block},
+                                 p.start_tilt)
+    points = monitor.MonitoringPoints(["A-1"], [setup.toe])
+    return tilt_run.TiltRun(p, CRITERIA, monitor.Checkpoint(str(tmp_path)), state, layout, points, Series(),
+                            0.012 / 2.5, 0.012)
+
+
+def resumed_run(tmp_path, p: tilt_run.TiltProtocol) -> tilt_run.TiltRun:
+    checkpoint = monitor.Checkpoint(str(tmp_path))
+    state = checkpoint.load()
+    return tilt_run.TiltRun(p, CRITERIA, checkpoint, state, columns.ColumnLayout(**state["layout"]),
+                            monitor.MonitoringPoints.from_dict(state["points"]), Series(state["series"]),
+                            0.012 / 2.5, 0.012)
+
+
+def tilts(run: tilt_run.TiltRun) -> list[tuple[float, str]]:
+    return [(stage["tilt"], stage["outcome"]) for stage in run.state["stages"]]
+
+
+def test_the_block_fails_at_the_first_stage_past_its_friction_angle_and_runs_on_after_it(empty_scene, tmp_path, capsys):
+    run = fresh_run(tmp_path, protocol())
+    assert run.run() == 23.0
+    assert tilts(run) == [(17.0, "equilibrium"), (19.0, "equilibrium"), (21.0, "equilibrium"), (23.0, "failed")]
+    assert run.state["phase"]["name"] == "analysis" and O.time - run.state["stages"][-1]["time"] >= 0.02
+    assert "tilt 23.0 deg: failed" in capsys.readouterr().out
+    tilt_report.report(run, str(tmp_path), {"failure_tilt_deg": 22, "phi_deg": [0]}, "block")
+    summary = json.loads((tmp_path / "summary.json").read_text())
+    assert summary["failure_tilt_deg"] == 23.0 and summary["first_failure_tilt_deg"] == 23.0
+    assert summary["inputs"] == {"case": "block"} and len(summary["stages"]) == 4
+    O.reset()
+    longer = resumed_run(tmp_path, protocol(post_failure_time=0.06))  # a finished run given a longer run after failure
+    assert longer.run() == 23.0 and O.time - longer.state["stages"][-1]["time"] >= 0.06
+    assert longer.state["phase"]["name"] == "analysis" and len(longer.state["stages"]) == 4
+
+
+def test_a_run_stopped_at_max_tilt_continues_from_its_checkpoint_to_the_same_failure(empty_scene, tmp_path, capsys):
+    stopped = fresh_run(tmp_path, protocol(max_tilt=19.0))
+    assert stopped.run() is None and tilts(stopped) == [(17.0, "equilibrium"), (19.0, "equilibrium")]
+    tilt_report.report(stopped, str(tmp_path), {"failure_tilt_deg": 22, "phi_deg": [0]}, "block")
+    assert "no failure up to max_tilt = 19.0 deg" in capsys.readouterr().out
+    assert json.loads((tmp_path / "summary.json").read_text())["stable_up_to_deg"] == 19.0
+    O.reset()
+    continued = resumed_run(tmp_path, protocol())
+    assert continued.run() == 23.0
+    assert tilts(continued) == [(17.0, "equilibrium"), (19.0, "equilibrium"), (21.0, "equilibrium"), (23.0, "failed")]
+    log = capsys.readouterr().out
+    assert log.index("tilt 17.0 deg: equilibrium") < log.index("tilt 23.0 deg: failed")  # the log lists every stage
+    assert continued.series.snapshots == 5  # one per stage, one after the failure's run
+
+
+@pytest.mark.parametrize("name, value, valid", [("checkpoint_every", 0.0, "> 0 (wall seconds)"),
+                                               ("arrest_time", -1.0, "0 (the first failing stage is the failure)"),
+                                               ("stage_rate", -1.0, "0 (each step at once) or > 0 deg/s"),
+                                               ("post_failure_time", -0.1, ">= 0 s"),
+                                               ("damping", 1.0, "in [0, 1)")])
+def test_a_bad_protocol_is_refused_naming_the_parameter(name, value, valid):
+    with pytest.raises(ValueError, match=re.escape(f"{name} = {value} is invalid: it must be {valid}")):
+        protocol(**{name: value})
