@@ -260,11 +260,10 @@ class TiltRun:
             phase = self.begin("stage", reference=tilting.centroids(self.watched).tolist())
         while state["failure_tilt"] is None and state["tilt"] <= p.max_tilt + 1e-9:
             if phase["name"] == "stage":
-                failed = self.judge_stage(phase)["outcome"] == "failed"
-                if not failed:
-                    phase = self.next_stage()
-                else:
+                if self.judge_stage(phase)["outcome"] == "failed":
                     phase = self.begin("arrest") if p.arrest_time > 0 else self.collapse()
+                else:
+                    phase = self.next_stage()
                 self.save_checkpoint()
             if phase["name"] == "arrest":  # a failure that comes to rest within arrest_time is not the slope's
                 phase = self.judge_arrest(phase)
