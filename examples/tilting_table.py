@@ -63,10 +63,11 @@ surface y = 0, columns standing along +y, the toe at the right, the slope to the
 Calibration (the issue allows joint friction and bond strengths within the thesis' ranges;
 `bond_tensile_strength`, `main_joint_friction`, `base_joint_friction`, 0 = the tables' value).
 The ideal model's current rows use 85 kPa (at Table 5-2's 209 kPa no bond of the reconstructed
-slope breaks up to 44 deg, R 1-4 mm); the random model keeps Table 5-2. Without local damping the slope fails in the
-stage in which its most stressed bond reaches the strength, so the packing seed moves the failure
-tilt as much as the strength does (docs/tilting_table.md: "Ideal model: bond-strength
-calibration", "Without local damping", "The random model at R 1-4 mm between pieces").
+slope breaks up to 44 deg, R 1-4 mm); the random model keeps Table 5-2. Without local damping the
+slope fails in the stage in which its most stressed bond reaches the strength, so the packing seed
+moves the failure tilt as much as the strength does (docs/tilting_table.md: "Ideal model:
+bond-strength calibration", "Without local damping", "The random model at R 1-4 mm between
+pieces").
 
 Loading: the discs within Rmax of the table are fixed in x and y (§5.2.4.2); gravity is turned
 by the tilt (Fig 5-7). The model first comes to rest on the level table, then the tilt rises
