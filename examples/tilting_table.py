@@ -289,7 +289,6 @@ if checkpoint.continues(inputs, table.resume, free=tilt_run.FREE, added=ADDED):
     print(f"resuming {table.out} in its {state['phase']['name']} phase at {state['tilt']} deg "
           "(resume=0 starts afresh)", flush=True)
     state["inputs"] = inputs  # the run goes on with these (resume=1 may change any): the same command continues it
-    layout = columns.ColumnLayout(**state["layout"])
     points = monitor.MonitoringPoints.from_dict(state["points"])
 else:
     output.discard_summary(table.out)
@@ -299,6 +298,6 @@ else:
     state = tilt_run.fresh_state(inputs, layout, ids, column_top_bands(column_members(layout), 2 * table.rmax),
                                  table.start_tilt)
 series = paraview.ParaViewSeries(f"{table.out}/paraview", joints.rock_functor().joints.blockOfBody, state.get("series"))
-run = tilt_run.TiltRun(protocol, criteria, checkpoint, state, layout, points, series, table.rmin, table.rmax)
+run = tilt_run.TiltRun(protocol, criteria, checkpoint, state, points, series, table.rmin, table.rmax)
 run.run()
 tilt_report.report(run, table.out, THESIS[table.arrangement], table.arrangement)

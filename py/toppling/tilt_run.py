@@ -103,10 +103,11 @@ class TiltRun:
     centre fell 2 Rmax below the table has left it)."""
 
     def __init__(self, protocol: TiltProtocol, criteria: tilting.StageCriteria, checkpoint: monitor.Checkpoint,
-                 state: dict[str, Any], layout: columns.ColumnLayout, points: monitor.MonitoringPoints,
-                 series: paraview.ParaViewSeries, rmin: float, rmax: float):
+                 state: dict[str, Any], points: monitor.MonitoringPoints, series: paraview.ParaViewSeries,
+                 rmin: float, rmax: float):
         self.protocol, self.criteria, self.checkpoint, self.state = protocol, criteria, checkpoint, state
-        self.layout, self.points, self.series, self.rmin, self.rmax = layout, points, series, rmin, rmax
+        self.points, self.series, self.rmin, self.rmax = points, series, rmin, rmax
+        self.layout = layout = columns.ColumnLayout(**state["layout"])
         self.off_table = -2 * rmax
         self.ids, self.watched = state["ids"], state["watched"]
         # older checkpoints lack the labels: the column each watched group stands in when resumed

@@ -7,10 +7,9 @@ import pytest
 from yade import O, utils
 from yade.wrapper import ParallelBondMat
 
+from conftest import ROCK
 from toppling import analysis, columns, incline, monitor, scene, tilting
 
-ROCK = dict(young=15e6, knKs=1.4, density=2340.0, bondYoung=15.9e6, bondKnKs=1.8, normalDamping=0.13,
-            bondNormalDamping=0.2)
 
 
 def test_layout_outline_columns_and_joints():

@@ -7,10 +7,10 @@ import re
 import pytest
 from yade import O
 
+from conftest import ROCK
 from toppling import columns, incline, monitor, tilt_report, tilt_run, tilting
 
-ROCK = dict(young=15e6, knKs=1.4, density=2340.0, bondYoung=15.9e6, bondKnKs=1.8, normalDamping=0.13,
-            bondNormalDamping=0.2)
+RMIN, RMAX = 0.012 / 2.5, 0.012
 FRICTION_DEG = math.degrees(math.atan(0.4))  # 21.8 deg: stages at 17, 19, 21 stand, 23 slides
 CRITERIA = tilting.StageCriteria(chunk=0.02, rest_speed=1e-3, fail_displacement=2e-3, max_stage_time=0.3)
 
@@ -35,21 +35,19 @@ def protocol(**changes) -> tilt_run.TiltProtocol:
 
 
 def fresh_run(tmp_path, p: tilt_run.TiltProtocol) -> tilt_run.TiltRun:
-    setup = incline.build(0.1, 0.05, 0.012 / 2.5, 0.012, ROCK, FRICTION_DEG)
+    setup = incline.build(0.1, 0.05, RMIN, RMAX, ROCK, FRICTION_DEG)
     layout = columns.ColumnLayout(toe_x=0.15, width=0.1, heights=[0.05])  # the block as column A-1
     state = tilt_run.fresh_state({"case": "block"}, layout, setup.block + setup.base, {"A-1": setup.block},
                                  p.start_tilt)
     points = monitor.MonitoringPoints(["A-1"], [setup.toe])
-    return tilt_run.TiltRun(p, CRITERIA, monitor.Checkpoint(str(tmp_path)), state, layout, points, Series(),
-                            0.012 / 2.5, 0.012)
+    return tilt_run.TiltRun(p, CRITERIA, monitor.Checkpoint(str(tmp_path)), state, points, Series(), RMIN, RMAX)
 
 
 def resumed_run(tmp_path, p: tilt_run.TiltProtocol) -> tilt_run.TiltRun:
     checkpoint = monitor.Checkpoint(str(tmp_path))
     state = checkpoint.load()
-    return tilt_run.TiltRun(p, CRITERIA, checkpoint, state, columns.ColumnLayout(**state["layout"]),
-                            monitor.MonitoringPoints.from_dict(state["points"]), Series(state["series"]),
-                            0.012 / 2.5, 0.012)
+    return tilt_run.TiltRun(p, CRITERIA, checkpoint, state, monitor.MonitoringPoints.from_dict(state["points"]),
+                            Series(state["series"]), RMIN, RMAX)
 
 
 def tilts(run: tilt_run.TiltRun) -> list[tuple[float, str]]:
