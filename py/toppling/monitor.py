@@ -44,7 +44,7 @@ class Progress:
                 eta = f"{(now - since) * (1 - fraction_done) / (fraction_done - done_before):.0f} s"
         self.last, self.last_sim_time = now, O.time
         print(f"[{elapsed:7.0f} s] {label}  step {O.iter}  t = {O.time:.4f} s  "
-              f"Ek = {self.energy():.3e} J  broken bonds {len(scene.bond_law().breakMode)}  ETA {eta}",
+              f"Ek = {self.energy():.3e} J  broken bonds {scene.broken_bonds()}  ETA {eta}",
               flush=True)
 
     @property

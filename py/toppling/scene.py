@@ -128,6 +128,11 @@ def bond_law() -> Law2_ScGeom_ParallelBondPhys_ParallelBond:
     return functor(Law2_ScGeom_ParallelBondPhys_ParallelBond)
 
 
+def broken_bonds() -> int:
+    """How many bonds have broken so far (in either mode)."""
+    return len(bond_law().breakMode)
+
+
 def run_steps(steps: int) -> None:
     """Run ``steps`` time steps (fewer if a law stops the run), in this thread.
 

@@ -6,12 +6,14 @@ import numpy as np
 from yade import O
 
 from toppling import analysis, output, plots, scene
-from toppling.tilt_run import TiltRun, arrested_text
+from toppling.tilt_run import TiltRun, arrested_text, ramp_warning
 
 
 def report(run: TiltRun, out: str, thesis: dict, name: str) -> None:
     """Write the run's summary and figures into ``out`` and print its result beside ``thesis``
     (``failure_tilt_deg``, ``phi_deg``); ``name`` (the arrangement) titles them."""
+    if warning := ramp_warning(run.state.get("breaks_before_stages") or {}):  # again beside the result it qualifies
+        print(warning)
     if run.failure_tilt is None:
         report_stable(run, out, thesis)
     else:

@@ -89,6 +89,17 @@ def arrest_line(stage: dict, arrest_time: float) -> str:
             f"phi {phi} deg): tilting on")
 
 
+def ramp_warning(breaks: dict) -> str:
+    """The warning for bonds broken before the first stage (``breaks``: per phase, level and
+    ramp), empty if none: the first stage's slope is then already damaged and its failure tilt
+    may be lower than the intact slope's."""
+    if not any(breaks.values()):
+        return ""
+    return (f"WARNING: {breaks['level']} bonds broke on the level table and {breaks['ramp']} on the ramp to "
+            "start_tilt: the slope entered its first stage damaged and its failure tilt may be low; "
+            "rerun with a lower tilt_rate or start_tilt")
+
+
 def arrested_text(arrested: list[dict]) -> str:
     """The failures that came to rest, for a run's last line."""
     tilts = ", ".join(f"{failure['tilt']:.1f}" for failure in arrested)
@@ -198,7 +209,7 @@ class TiltRun:
         kept = tilting.on_table(self.watched, self.off_table)
         stage["left_table"] = [label for label, group in zip(self.watched_columns, kept) if not group]
         stage["discs_off_table"] = sum(O.bodies[i].state.pos[1] <= self.off_table for i in self.ids)
-        stage["breaks"] = len(scene.bond_law().breakMode)
+        stage["breaks"] = scene.broken_bonds()
         failure = self.analyse(stage["tilt"])  # before the next stage moves the reference
         stage["phi_deg"] = [plane.phi_deg for plane in failure["planes"]]
         stage["s_over_h"], stage["t_over_h"] = failure["s_over_h"], failure["t_over_h"]
@@ -254,10 +265,15 @@ class TiltRun:
             if self.run_stage(0.0, phase) == "failed":
                 raise RuntimeError("the model does not stand on the level table: check the outline and the joints")
             print(f"level table: equilibrium after {O.time - phase['start']:.3f} s", flush=True)
+            state["breaks_before_stages"] = {"level": scene.broken_bonds()}
             phase = self.begin("ramp")
         scene.set_local_damping(p.damping)  # from here on the loading's, also in a resumed run
         if phase["name"] == "ramp":
             tilting.ramp(0.0, p.start_tilt, p.start_tilt / p.tilt_rate, self.on_chunk, start=phase["start"])
+            before = state.setdefault("breaks_before_stages", {"level": 0})  # older checkpoints: level's counted here
+            before["ramp"] = scene.broken_bonds() - before["level"]
+            if warning := ramp_warning(before):  # said now: the user may stop the run rather than wait for its stages
+                print(warning, flush=True)
             phase = self.begin("stage", reference=tilting.centroids(self.watched).tolist())
         while state["failure_tilt"] is None and state["tilt"] <= p.max_tilt + 1e-9:
             if phase["name"] == "stage":
@@ -294,5 +310,6 @@ class TiltRun:
                 "s_over_h", "t_over_h")
         arrested = [{key: stage.get(key) for key in keys} for stage in failed if stage.get("came_to_rest_after_s")]
         return dict(first_failure_tilt_deg=failed[0]["tilt"] if failed else None, arrested_failures=arrested,
+                    breaks_before_stages=self.state.get("breaks_before_stages"),
                     tensile_breaks=modes.count(2), shear_breaks=modes.count(3), discs=len(self.ids),
                     stages=self.state["stages"], steps=O.iter, simulated_time=O.time, wall_time=self.wall_time())

@@ -6,9 +6,10 @@ import re
 
 import pytest
 from yade import O
+from yade.wrapper import ParallelBondMat
 
 from conftest import ROCK
-from toppling import columns, incline, monitor, tilt_report, tilt_run, tilting
+from toppling import bonding, columns, geometry, incline, monitor, packing, scene, tilt_report, tilt_run, tilting
 
 RMIN, RMAX = 0.012 / 2.5, 0.012
 FRICTION_DEG = math.degrees(math.atan(0.4))  # 21.8 deg: stages at 17, 19, 21 stand, 23 slides
@@ -41,6 +42,24 @@ def fresh_run(tmp_path, p: tilt_run.TiltProtocol) -> tilt_run.TiltRun:
                                  p.start_tilt)
     points = monitor.MonitoringPoints(["A-1"], [setup.toe])
     return tilt_run.TiltRun(p, CRITERIA, monitor.Checkpoint(str(tmp_path)), state, points, Series(), RMIN, RMAX)
+
+
+def cantilever_run(tmp_path, p: tilt_run.TiltProtocol, tensile_strength: float) -> tilt_run.TiltRun:
+    """A 2 x 10 cm column bonded to a fixed base: tilted, it bends like a cantilever."""
+    rmin, rmax, b, h = 0.0015, 0.003, 0.02, 0.1
+    section = [(0, -0.03), (0.1, -0.03), (0.1, 0), (0.06, 0), (0.06, h), (0.04, h), (0.04, 0), (0, 0)]
+    discs = packing.shrink_overlaps(packing.pack_polygon(geometry.region(section), rmin, rmax, 0.2).discs)
+    mat = ParallelBondMat(frictionAngle=0.5, bondTensileStrength=tensile_strength, bondCohesion=1e12, **ROCK)
+    base = [O.bodies.append(scene.disc((x, y), r, mat, fixed=True)) for x, y, r in discs if y < 0]
+    column = [O.bodies.append(scene.disc((x, y), r, mat)) for x, y, r in discs if y >= 0]
+    O.engines = scene.engines(gravity=(0, -tilting.G, 0), local_damping=0.0)
+    floaters = set(bonding.remove_floaters(0.05 * rmin, ids=column))
+    column = [i for i in column if i not in floaters]
+    bonding.bond_within_gap(0.05 * rmin)
+    state = tilt_run.fresh_state({"case": "cantilever"}, columns.ColumnLayout(toe_x=0.06, width=b, heights=[h]),
+                                 column + base, {"A-1": column}, p.start_tilt)
+    points = monitor.MonitoringPoints(["A-1"], [max(column, key=lambda i: O.bodies[i].state.pos[1])])
+    return tilt_run.TiltRun(p, CRITERIA, monitor.Checkpoint(str(tmp_path)), state, points, Series(), rmin, rmax)
 
 
 def resumed_run(tmp_path, p: tilt_run.TiltProtocol) -> tilt_run.TiltRun:
@@ -83,6 +102,25 @@ def test_a_run_stopped_at_max_tilt_continues_from_its_checkpoint_to_the_same_fai
     log = capsys.readouterr().out
     assert log.index("tilt 17.0 deg: equilibrium") < log.index("tilt 23.0 deg: failed")  # the log lists every stage
     assert continued.series.snapshots == 5  # one per stage, one after the failure's run
+
+
+def test_bonds_broken_by_the_ramp_to_the_start_tilt_are_counted_and_reported(empty_scene, tmp_path, capsys):
+    # the bending tension at the column's foot, 3 rho g h^2 sin(alpha) / b, is 17 kPa at 30 deg and
+    # ~0 on the level table (the overlaps shrunk, bonds are stress-free there): 8 kPa breaks on the ramp
+    run = cantilever_run(tmp_path, protocol(start_tilt=30.0, max_tilt=30.0), tensile_strength=8e3)
+    run.run()
+    before = run.state["breaks_before_stages"]
+    assert before["level"] == 0 and before["ramp"] > 0
+    assert f"WARNING: 0 bonds broke on the level table and {before['ramp']} on the ramp" in capsys.readouterr().out
+    tilt_report.report(run, str(tmp_path), {"failure_tilt_deg": 0, "phi_deg": [0]}, "cantilever")
+    assert "rerun with a lower tilt_rate or start_tilt" in capsys.readouterr().out
+    assert json.loads((tmp_path / "summary.json").read_text())["breaks_before_stages"] == before
+
+
+def test_a_ramp_that_breaks_no_bond_warns_of_nothing(empty_scene, tmp_path, capsys):
+    run = cantilever_run(tmp_path, protocol(start_tilt=10.0, max_tilt=10.0), tensile_strength=8e3)  # 6 kPa
+    assert run.run() is None and run.state["breaks_before_stages"] == {"level": 0, "ramp": 0}
+    assert "WARNING" not in capsys.readouterr().out
 
 
 @pytest.mark.parametrize("name, value, valid", [("checkpoint_every", 0.0, "> 0 (wall seconds)"),
