@@ -91,13 +91,13 @@ def arrest_line(stage: dict, arrest_time: float) -> str:
 
 def ramp_warning(breaks: dict) -> str:
     """The warning for bonds broken before the first stage (``breaks``: per phase, level and
-    ramp), empty if none: the first stage's slope is then already damaged and its failure tilt
+    ramp), empty if none: the first stage's slope is then already cracked and its failure tilt
     may be lower than the intact slope's."""
     if not any(breaks.values()):
         return ""
     return (f"WARNING: {breaks['level']} bonds broke on the level table and {breaks['ramp']} on the ramp to "
-            "start_tilt: the slope entered its first stage damaged and its failure tilt may be low; "
-            "rerun with a lower tilt_rate or start_tilt")
+            "start_tilt: the slope entered its first stage cracked and its failure tilt may be low; "
+            "rerun with a lower start_tilt to judge in stages the tilts the ramp passed")
 
 
 def arrested_text(arrested: list[dict]) -> str:
