@@ -95,9 +95,16 @@ def ramp_warning(breaks: dict) -> str:
     may be lower than the intact slope's."""
     if not any(breaks.values()):
         return ""
+    advice = []
+    if breaks["level"]:  # no tilt yet: a lower start_tilt cannot spare these bonds
+        advice.append("bonds that break on the level table carry overlaps locked into the packing or the slope's "
+                      "own weight: shrink the overlaps before bonding (packing.shrink_overlaps) or raise the bond "
+                      "strengths")
+    if breaks["ramp"]:
+        advice.append("rerun with a lower start_tilt to judge in stages the tilts the ramp passed")
     return (f"WARNING: {breaks['level']} bonds broke on the level table and {breaks['ramp']} on the ramp to "
             "start_tilt: the slope entered its first stage cracked and its failure tilt may be low; "
-            "rerun with a lower start_tilt to judge in stages the tilts the ramp passed")
+            + "; ".join(advice))
 
 
 def arrested_text(arrested: list[dict]) -> str:

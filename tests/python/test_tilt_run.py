@@ -44,11 +44,13 @@ def fresh_run(tmp_path, p: tilt_run.TiltProtocol) -> tilt_run.TiltRun:
     return tilt_run.TiltRun(p, CRITERIA, monitor.Checkpoint(str(tmp_path)), state, points, Series(), RMIN, RMAX)
 
 
-def cantilever_run(tmp_path, p: tilt_run.TiltProtocol, tensile_strength: float) -> tilt_run.TiltRun:
-    """A 2 x 10 cm column bonded to a fixed base: tilted, it bends like a cantilever."""
+def cantilever_run(tmp_path, p: tilt_run.TiltProtocol, tensile_strength: float, shrink: bool = True) -> tilt_run.TiltRun:
+    """A 2 x 10 cm column bonded to a fixed base: tilted, it bends like a cantilever. Unless
+    ``shrink``, its bonds are installed over the packing's overlaps and so start loaded."""
     rmin, rmax, b, h = 0.0015, 0.003, 0.02, 0.1
     section = [(0, -0.03), (0.1, -0.03), (0.1, 0), (0.06, 0), (0.06, h), (0.04, h), (0.04, 0), (0, 0)]
-    discs = packing.shrink_overlaps(packing.pack_polygon(geometry.region(section), rmin, rmax, 0.2).discs)
+    discs = packing.pack_polygon(geometry.region(section), rmin, rmax, 0.2).discs
+    discs = packing.shrink_overlaps(discs) if shrink else discs
     mat = ParallelBondMat(frictionAngle=0.5, bondTensileStrength=tensile_strength, bondCohesion=1e12, **ROCK)
     base = [O.bodies.append(scene.disc((x, y), r, mat, fixed=True)) for x, y, r in discs if y < 0]
     column = [O.bodies.append(scene.disc((x, y), r, mat)) for x, y, r in discs if y >= 0]
@@ -115,6 +117,18 @@ def test_bonds_broken_by_the_ramp_to_the_start_tilt_are_counted_and_reported(emp
     tilt_report.report(run, str(tmp_path), {"failure_tilt_deg": 0, "phi_deg": [0]}, "cantilever")
     assert "rerun with a lower start_tilt" in capsys.readouterr().out
     assert json.loads((tmp_path / "summary.json").read_text())["breaks_before_stages"] == before
+
+
+def test_bonds_broken_on_the_level_table_are_blamed_on_the_packing_not_the_ramp(empty_scene, tmp_path, capsys):
+    # the same column bonded over its packing's overlaps: their locked-in force breaks a few 40 kPa bonds (80 kPa
+    # none) before any tilt, and the ramp to 10 deg (6 kPa of bending) none
+    run = cantilever_run(tmp_path, protocol(start_tilt=10.0, max_tilt=10.0), tensile_strength=40e3, shrink=False)
+    run.run()
+    before = run.state["breaks_before_stages"]
+    assert before["level"] > 0 and before["ramp"] == 0
+    out = capsys.readouterr().out
+    assert f"WARNING: {before['level']} bonds broke on the level table" in out and "packing.shrink_overlaps" in out
+    assert "lower start_tilt" not in out
 
 
 def test_a_ramp_that_breaks_no_bond_warns_of_nothing(empty_scene, tmp_path, capsys):
