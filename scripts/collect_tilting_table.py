@@ -9,7 +9,8 @@ the same model): runs that differ only in rmin/rmax, each compared with the next
 the same bond gap and with the next coarser one of the same bond density (a gap in proportion to
 the mean radius); a run that stood to its last stage counts as failing above it; the spread of
 failure tilt (range, mean, standard deviation, seeds within 3 deg of the thesis) and phi over
-packings that differ only in their seed; and the size check on the means over seeds, decided
+packings that differ only in their seed, and over the random arrangement's draws (packing seed and
+layout seed) where several layouts were run; and the size check on the means over seeds, decided
 only when two standard errors of the difference keep it inside (or outside) the 2 deg.
 """
 import fnmatch
@@ -31,6 +32,8 @@ RUN_ONLY = ("out", "resume", "checkpoint_every", "max_tilt", "post_failure_time"
 SIZE_TOLERANCE_DEG = 2.0
 TARGET_TOLERANCE_DEG = 3.0  # issue 4: the thesis' failure tilt +- 3 deg
 TABLE_BOND_GAP = 1.05e-3  # [m] Table 5-2: what bond_gap 0 stands for (examples/tilting_table.py)
+SEED = ("seed",)  # what draws one packing of a model
+DRAW = ("seed", "layout_seed")  # what draws one random arrangement: its packing and its block layout
 
 
 def fmt(value, digits=1):
@@ -52,10 +55,11 @@ def load(folder: str, patterns: Sequence[str] = ("*",)) -> dict[str, dict]:
     return runs
 
 
-def model_key(inputs: dict) -> tuple[tuple[str, object], ...]:
-    """What defines the model apart from the particle size and the bond gap, as (input, value)
-    pairs: hashable, and ``dict(key)`` gives them back by name."""
-    names = ("arrangement",) + CALIBRATION + tuple(name for name in ADDED if name != "bond_gap")
+def model_key(inputs: dict, drawn_by: Sequence[str] = SEED) -> tuple[tuple[str, object], ...]:
+    """What defines the model apart from the particle size, the bond gap and the inputs that
+    draw one realisation of it (``drawn_by``), as (input, value) pairs: hashable, and
+    ``dict(key)`` gives them back by name."""
+    names = ("arrangement",) + CALIBRATION + tuple(name for name in ADDED if name not in ("bond_gap",) + tuple(drawn_by))
     return tuple((name, inputs.get(name, ADDED.get(name))) for name in names)
 
 
@@ -73,6 +77,12 @@ def same_bond_density(a: dict, b: dict) -> bool:
 
 def numerics(inputs: dict) -> dict:
     return {name: inputs.get(name, default) for name, default in NUMERICS.items()}
+
+
+def draw(s: dict, drawn_by: Sequence[str]) -> tuple:
+    """The values of the inputs ``drawn_by`` that drew run ``s``."""
+    inputs = {**ADDED, **NUMERICS, **s["inputs"]}
+    return tuple(inputs[name] for name in drawn_by)
 
 
 def phi_change(s: dict, ref: dict) -> tuple[Optional[list[float]], str]:
@@ -157,15 +167,15 @@ def first_stage_failure(s: dict) -> bool:
     return s["failure_tilt_deg"] is not None and s.get("failed_in_first_stage", False)
 
 
-def one_per_seed(group: list[dict]) -> list[dict]:
-    """One run per seed: one that did not fail in its first stage where there is one (the same
-    packing rerun from a lower start_tilt)."""
-    chosen: dict[int, dict] = {}
+def one_per_draw(group: list[dict], drawn_by: Sequence[str] = SEED) -> list[dict]:
+    """One run per draw (the values of ``drawn_by``): one that did not fail in its first stage
+    where there is one (the same packing rerun from a lower start_tilt)."""
+    chosen: dict[tuple, dict] = {}
     for s in group:
-        seed = numerics(s["inputs"])["seed"]
-        if seed not in chosen or first_stage_failure(chosen[seed]) and not first_stage_failure(s):
-            chosen[seed] = s
-    return sorted(chosen.values(), key=lambda s: numerics(s["inputs"])["seed"])
+        key = draw(s, drawn_by)
+        if key not in chosen or first_stage_failure(chosen[key]) and not first_stage_failure(s):
+            chosen[key] = s
+    return [chosen[key] for key in sorted(chosen)]
 
 
 class SeedGroup(NamedTuple):
@@ -190,17 +200,17 @@ class SeedGroup(NamedTuple):
         return f"R {1e3 * self.rmin:g}–{1e3 * self.rmax:g} mm"
 
 
-def seed_groups(runs: dict[str, dict]) -> dict[SeedGroup, list[dict]]:
-    """One run per seed (one_per_seed) of each model, packing size, bond gap and numerical
-    setting run with several seeds."""
+def seed_groups(runs: dict[str, dict], drawn_by: Sequence[str] = SEED) -> dict[SeedGroup, list[dict]]:
+    """One run per draw (one_per_draw) of each model, packing size, bond gap and numerical
+    setting; by default a draw is a packing seed."""
     groups: dict[SeedGroup, list[dict]] = {}
     for s in runs.values():
         inputs = s["inputs"]
         settings = numerics(inputs)
-        key = SeedGroup(model_key(inputs), inputs["rmin"], inputs["rmax"], bond_gap(inputs),
+        key = SeedGroup(model_key(inputs, drawn_by), inputs["rmin"], inputs["rmax"], bond_gap(inputs),
                         settings["timestep_safety"], settings["joint_stiffness_scale"])
         groups.setdefault(key, []).append(s)
-    return {key: one_per_seed(group) for key, group in groups.items()}
+    return {key: one_per_draw(group, drawn_by) for key, group in groups.items()}
 
 
 def failed_seeds(group: list[dict]) -> list[dict]:
@@ -213,7 +223,8 @@ def group_name(key: SeedGroup) -> str:
     model = dict(key.model)
     joints += f", local damping {model['damping']:g}" if model["damping"] != ADDED["damping"] else ""
     joints += f", steps at {model['stage_rate']:g} deg/s" if model["stage_rate"] else ""
-    joints += f", layout seed {model['layout_seed']:g}" if model["layout_seed"] != ADDED["layout_seed"] else ""
+    layout = model.get("layout_seed", ADDED["layout_seed"])  # absent where the layout is drawn
+    joints += f", layout seed {layout:g}" if layout != ADDED["layout_seed"] else ""
     joints += ", sliding toe" if model["sliding_toe"] else ""
     joints += ", every block boundary a joint" if not model["cut_rules"] else ""
     joints += ", no toe column" if not model["toe_column"] else ""
@@ -226,20 +237,21 @@ def group_name(key: SeedGroup) -> str:
     return f"{model['arrangement']}{strength} {key.size_text()}{gap}, safety {key.safety:g}{joints}"
 
 
-def seed_spread(runs: dict[str, dict]) -> list[str]:
-    """Lines giving, for each model, packing size and time step run with several seeds, the
-    range, mean and standard deviation of the failure tilt, how many seeds failed within the
-    issue's tolerance of the thesis' tilt, and the range of phi (first surface). A seed that
-    stood to its last stage, or failed in its first (an upper bound), counts as one outside the
-    tolerance and in none of the figures."""
+def seed_spread(runs: dict[str, dict], drawn_by: Sequence[str] = SEED) -> list[str]:
+    """Lines giving, for each model, packing size and time step run with several draws (packing
+    seeds; with DRAW, packing and layout seeds where several layouts were run), the range, mean
+    and standard deviation of the failure tilt, how many draws failed within the issue's
+    tolerance of the thesis' tilt, and the range of phi (first surface). A draw that stood to its
+    last stage, or failed in its first (an upper bound), counts as one outside the tolerance and
+    in none of the figures."""
     lines = []
-    for key, group in seed_groups(runs).items():
+    for key, group in seed_groups(runs, drawn_by).items():
         failed = failed_seeds(group)
-        if len(group) < 2 or len(failed) < 2:
-            continue
+        if len(group) < 2 or len(failed) < 2 or len({draw(s, drawn_by)[-1] for s in group}) < 2:
+            continue  # the last input drawn does not vary: another table's group
         tilts = [s["failure_tilt_deg"] for s in failed]
         phis = [s["phi_deg"][0] for s in failed if s["phi_deg"]]
-        seeds = ", ".join(str(numerics(s["inputs"])["seed"]) for s in group)
+        seeds = ", ".join("/".join(f"{v:g}" for v in draw(s, drawn_by)) for s in group)
         target = group[0]["thesis"]["failure_tilt_deg"]
         inside = sum(abs(t - target) <= TARGET_TOLERANCE_DEG for t in tilts)
         phi_range = f"{min(phis):.1f}–{max(phis):.1f}" if phis else "-"
@@ -377,6 +389,10 @@ def main(folder: str, patterns: Sequence[str] = ("*",)) -> None:
     section("Packing seed (range over the seeds of the same model, packing size and time step)",
             ["model", "seeds", "failure tilt (°)", "mean ± sd (°)", f"within {TARGET_TOLERANCE_DEG:g}° of the thesis",
              "φ (°)"], seed_spread(runs))
+    section("Packing and layout (range over the random arrangement's draws, packing seed / layout seed, of the same "
+            "model, packing size and time step)",
+            ["model", "packing / layout seeds", "failure tilt (°)", "mean ± sd (°)",
+             f"within {TARGET_TOLERANCE_DEG:g}° of the thesis", "φ (°)"], seed_spread(runs, DRAW))
     section(f"Particle size over seeds (finer minus next coarser, means of the seeds that failed ± the standard "
             f"error; within {SIZE_TOLERANCE_DEG:g} deg by two standard errors?)",
             ["model vs coarser", "finer: seeds failed, failure tilt (°), φ (°)", "coarser: the same",

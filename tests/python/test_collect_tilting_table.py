@@ -194,3 +194,15 @@ def test_a_joint_friction_and_joints_between_pieces_name_their_own_seed_group():
         "| random 130 kPa R 2–8 mm, safety 0.5 | 1, 2 | 15.0–25.0 | 20.0 ± 7.1 | 0 of 2 | 20.0–20.0 |",
         "| random 130 kPa R 2–8 mm, safety 0.5, joints between pieces of rock, base joint friction 0.23 | 1, 2 | "
         "17.0–37.0 | 27.0 ± 14.1 | 1 of 2 | 20.0–20.0 |"]
+
+
+def test_the_random_arrangement_is_spread_over_packings_and_layouts_where_several_layouts_were_run():
+    draws = ((1, 1, 19.0), (2, 1, 15.0), (3, 1, 29.0), (1, 3, 19.0), (1, 2, None))
+    runs = {f"s{seed}l{layout}": summary(0.004, tilt, [20.0] if tilt else [], arrangement="random", seed=seed,
+                                         layout_seed=layout) for seed, layout, tilt in draws}
+    runs["other_model"] = summary(0.004, 40.0, [20.0], arrangement="random", strength=65e3, seed=2)
+    assert collect.seed_spread(runs, collect.DRAW) == [
+        "| random 130 kPa R 1–4 mm, safety 0.5 | 1/1, 1/2, 1/3, 2/1, 3/1 | 15.0–29.0 | 20.5 ± 6.0 | 2 of 5 (1 stood) | "
+        "20.0–20.0 |"]
+    assert collect.seed_spread(runs) == [  # the packing seeds of layout 1 alone
+        "| random 130 kPa R 1–4 mm, safety 0.5 | 1, 2, 3 | 15.0–29.0 | 21.0 ± 7.2 | 1 of 3 | 20.0–20.0 |"]
