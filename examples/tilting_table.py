@@ -119,7 +119,7 @@ parameters stops the run (it names them) rather than be overwritten.
 
     ./yade -x -j2 -n examples/tilting_table.py
     ./yade-batch -j1 --log='results/batch/@.log' examples/tilting_table.table examples/tilting_table.py
-    ./yade-batch -j2 --lines 143,144,133 --log='results/batch/@.log' examples/tilting_table.table examples/tilting_table.py
+    ./yade-batch -j2 --lines 143,144,155 --log='results/batch/@.log' examples/tilting_table.table examples/tilting_table.py
                                                     # the thesis' cases at their current settings (README)
 """
 import math
