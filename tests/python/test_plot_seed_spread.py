@@ -35,5 +35,13 @@ def test_the_figure_is_written(tmp_path, capsys):
         (tmp_path / name / "summary.json").write_text(json.dumps(s))
     plot.main(str(tmp_path), str(tmp_path / "spread.png"))
     assert (tmp_path / "spread.png").stat().st_size > 10_000
-    with pytest.raises(SystemExit, match="several seeds"):
+    with pytest.raises(SystemExit, match="several seeds or layouts"):
         plot.main(str(tmp_path / "lonely"), str(tmp_path / "none.png"))
+
+
+def test_the_random_arrangement_is_drawn_over_its_packing_and_layout_seeds():
+    layouts = {f"l{layout}": {**summary(4e-3, 1, tilt, 3000.0), "inputs": {
+        **summary(4e-3, 1, tilt, 3000.0)["inputs"], "arrangement": "random", "layout_seed": layout}}
+        for layout, tilt in ((1, 19.0), (2, 17.0), (3, 19.0))}
+    (sizes,) = plot.sized_groups(layouts).values()
+    assert [len(group) for group in sizes.values()] == [3]
