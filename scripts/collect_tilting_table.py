@@ -59,7 +59,8 @@ def model_key(inputs: dict, drawn_by: Sequence[str] = SEED) -> tuple[tuple[str, 
     """What defines the model apart from the particle size, the bond gap and the inputs that
     draw one realisation of it (``drawn_by``), as (input, value) pairs: hashable, and
     ``dict(key)`` gives them back by name."""
-    names = ("arrangement",) + CALIBRATION + tuple(name for name in ADDED if name not in ("bond_gap",) + tuple(drawn_by))
+    left_out = ("bond_gap",) + tuple(drawn_by)
+    names = ("arrangement",) + CALIBRATION + tuple(name for name in ADDED if name not in left_out)
     return tuple((name, inputs.get(name, ADDED.get(name))) for name in names)
 
 
