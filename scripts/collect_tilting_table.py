@@ -248,8 +248,8 @@ def seed_spread(runs: dict[str, dict], drawn_by: Sequence[str] = SEED) -> list[s
     lines = []
     for key, group in seed_groups(runs, drawn_by).items():
         failed = failed_seeds(group)
-        if len(group) < 2 or len(failed) < 2 or len({draw(s, drawn_by)[-1] for s in group}) < 2:
-            continue  # the last input drawn does not vary: another table's group
+        if len(failed) < 2 or len({draw(s, drawn_by)[-1] for s in group}) < 2:
+            continue  # the last input drawn does not vary: one run, or another table's group
         tilts = [s["failure_tilt_deg"] for s in failed]
         phis = [s["phi_deg"][0] for s in failed if s["phi_deg"]]
         seeds = ", ".join("/".join(f"{v:g}" for v in draw(s, drawn_by)) for s in group)

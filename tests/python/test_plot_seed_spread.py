@@ -40,8 +40,8 @@ def test_the_figure_is_written(tmp_path, capsys):
 
 
 def test_the_random_arrangement_is_drawn_over_its_packing_and_layout_seeds():
-    layouts = {f"l{layout}": {**summary(4e-3, 1, tilt, 3000.0), "inputs": {
-        **summary(4e-3, 1, tilt, 3000.0)["inputs"], "arrangement": "random", "layout_seed": layout}}
-        for layout, tilt in ((1, 19.0), (2, 17.0), (3, 19.0))}
+    layouts = {f"l{layout}": summary(4e-3, 1, tilt, 3000.0) for layout, tilt in ((1, 19.0), (2, 17.0), (3, 19.0))}
+    for layout, s in enumerate(layouts.values(), start=1):
+        s["inputs"].update(arrangement="random", layout_seed=layout)
     (sizes,) = plot.sized_groups(layouts).values()
     assert [len(group) for group in sizes.values()] == [3]
