@@ -17,7 +17,8 @@ reading of it):
 * failure surface: a line fitted through the columns' failure points; two lines (split at
   the best break point, each through >= 3 points) when that lowers the squared residual by
   ``split_gain`` and the two angles differ by >= ``min_angle_difference``; phi is the angle
-  of a line to the normal of the main joints, positive rising into the slope;
+  of a line to the normal of the main joints, positive rising into the slope; how strongly
+  the points call for two planes is the F-test's p-value of the best split (``split_p_value``);
 * zones per column, from its top point: ``no-movement`` (total displacement below
   ``still``), ``stable`` (moved, but came to rest), ``toppling`` (still moving, the top moving
   more than twice as much as the base), ``sliding`` (still moving, base moving with the top);
@@ -108,22 +109,47 @@ def _line(x: np.ndarray, y: np.ndarray) -> tuple[Plane, float]:
     return Plane(math.degrees(math.atan(-slope)), float(slope), float(intercept), (float(x.min()), float(x.max()))), sse
 
 
+def _best_split(p: np.ndarray) -> Optional[tuple[Plane, Plane, float]]:
+    """Toe part and upper part of the points ``p`` (toe first), each a line through >= 3
+    points, split where their summed squared residual is least; None below 6 points."""
+    best = None
+    for k in range(3, len(p) - 2):
+        a, sse_a = _line(p[:k, 0], p[:k, 1])
+        b, sse_b = _line(p[k:, 0], p[k:, 1])
+        if best is None or sse_a + sse_b < best[2]:
+            best = (a, b, sse_a + sse_b)
+    return best
+
+
+def _toe_first(points: Sequence[tuple[float, float]]) -> np.ndarray:
+    return np.array(sorted(points, key=lambda q: -q[0]))  # the toe has the largest x
+
+
 def fit_failure_surface(points: Sequence[tuple[float, float]], split_gain: float = 4.0,
                         min_angle_difference: float = 5.0) -> list[Plane]:
     """One or two lines through the failure points, ordered from the toe into the slope."""
     if len(points) < 2:
         raise ValueError(f"{len(points)} failure points: a failure surface needs at least 2")
-    p = np.array(sorted(points, key=lambda q: -q[0]))  # toe first (largest x)
+    p = _toe_first(points)
     one, sse1 = _line(p[:, 0], p[:, 1])
-    best = None
-    for k in range(3, len(p) - 2):  # each part through >= 3 points
-        a, sse_a = _line(p[:k, 0], p[:k, 1])
-        b, sse_b = _line(p[k:, 0], p[k:, 1])
-        if best is None or sse_a + sse_b < best[2]:
-            best = (a, b, sse_a + sse_b)
+    best = _best_split(p)
     if best and best[2] * split_gain < sse1 and abs(best[0].phi_deg - best[1].phi_deg) >= min_angle_difference:
         return [best[0], best[1]]
     return [one]
+
+
+def split_p_value(points: Sequence[tuple[float, float]]) -> Optional[float]:
+    """How strongly the failure points call for two planes: the p-value of the F-test of the
+    best two-line split (two more parameters) against one line, (SSE2 / SSE1)^((n - 4) / 2)
+    for F(2, n - 4). Optimistic, because the break point is searched for: a p above 0.05 says
+    one plane explains the points. None below 6 points (no split into two lines of >= 3).
+    ``fit_failure_surface``'s fourfold gain is p = 4^(-(n - 4) / 2): 0.06 for 8 points."""
+    p = _toe_first(points)
+    best = _best_split(p)
+    if best is None:
+        return None
+    sse1 = _line(p[:, 0], p[:, 1])[1]
+    return 1.0 if sse1 <= 0 else float((best[2] / sse1) ** ((len(p) - 4) / 2))
 
 
 def zone(top_displacement: float, still_moving: bool, base_displacement: float, still: float) -> str:
@@ -194,7 +220,8 @@ def table_failure(layout, reference: np.ndarray, now: np.ndarray, tops: dict[str
         fell_off=[label in top_of and now[top_of[label], 1] < floor for label in labels], least_motion=least_motion)
     planes = fit_failure_surface(points) if len(points) >= 2 else []
     height = layout.tilted_height(tilt_deg)
-    return {"planes": planes, "failure_points": points, "zones": zones, "height": height,
+    return {"planes": planes, "split_p": split_p_value(points), "failure_points": points, "zones": zones,
+            "height": height,
             **zone_distances(zones, layout.far_edges(tilt_deg), height)}
 
 

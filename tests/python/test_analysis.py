@@ -174,3 +174,23 @@ def test_column_labels_follow_the_thesis():
     assert [analysis.column_label(k) for k in (1, 7, 15, 26, 27)] == ["A-1", "G-7", "O-15", "Z-26", "AA-27"]
     with pytest.raises(ValueError, match="column"):
         analysis.column_label(0)
+
+
+def test_the_split_p_value_is_exact_where_only_one_split_is_possible():
+    """Six points admit one split (3 + 3), so the F-test is exact: of straight lines with
+    noise, 5 % have p < 0.05 (the exponent (n - 2) / 2 or (n - 5) / 2 gives 23 % or 0.3 %)."""
+    rng = np.random.default_rng(11)
+    x = -np.arange(1, 7) * WIDTH
+    p = [analysis.split_p_value(list(zip(x, 0.3 * x + rng.normal(0, 0.004, 6)))) for _ in range(4000)]
+    assert np.mean(np.array(p) < 0.05) == pytest.approx(0.05, abs=0.012)
+
+
+def test_the_split_p_value_tells_two_surfaces_from_one():
+    t1, t2, xb = math.tan(math.radians(14)), math.tan(math.radians(24)), -6 * WIDTH
+    surface = lambda x: 0.02 - t1 * x if x > xb else 0.02 - t1 * xb - t2 * (x - xb)  # noqa: E731
+    pos, disp, column = columns_cut_by(surface, n_columns=14)
+    assert analysis.split_p_value(surface_points(pos, disp, column)) < 1e-3
+    x = -np.arange(1, 13) * WIDTH
+    noisy = list(zip(x, 0.02 - math.tan(math.radians(20)) * x + np.random.default_rng(3).normal(0, 0.004, len(x))))
+    assert analysis.split_p_value(noisy) > 0.05
+    assert analysis.split_p_value(noisy[:5]) is None
