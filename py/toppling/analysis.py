@@ -142,7 +142,8 @@ def split_p_value(points: Sequence[tuple[float, float]]) -> Optional[float]:
     """How strongly the failure points call for two planes: the p-value of the F-test of the
     best two-line split (two more parameters) against one line, (SSE2 / SSE1)^((n - 4) / 2)
     for F(2, n - 4). Optimistic, because the break point is searched for: a p above 0.05 says
-    one plane explains the points. None below 6 points (no split into two lines of >= 3).
+    one plane explains the points, one below it is not proof of two. None below 6 points (no
+    split into two lines of >= 3).
     ``fit_failure_surface``'s fourfold gain is p = 4^(-(n - 4) / 2): 0.06 for 8 points."""
     p = _toe_first(points)
     best = _best_split(p)
