@@ -222,8 +222,7 @@ def table_failure(layout, reference: np.ndarray, now: np.ndarray, tops: dict[str
     planes = fit_failure_surface(points) if len(points) >= 2 else []
     height = layout.tilted_height(tilt_deg)
     return {"planes": planes, "split_p": split_p_value(points), "failure_points": points, "zones": zones,
-            "height": height,
-            **zone_distances(zones, layout.far_edges(tilt_deg), height)}
+            "height": height, **zone_distances(zones, layout.far_edges(tilt_deg), height)}
 
 
 def zone_distances(zones: Sequence[str], far_edges: Sequence[float], height: float) -> dict[str, Optional[float]]:
