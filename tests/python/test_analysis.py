@@ -47,19 +47,26 @@ def test_single_failure_surface_at_15_degrees():
     assert planes[0].phi_deg == pytest.approx(15, abs=0.5)
 
 
-def test_two_failure_surfaces_14_and_24_degrees():
+def points_on_two_surfaces():
+    """Failure points of 14 columns cut at 14 degrees over the six at the toe, 24 above."""
     t1, t2, xb = math.tan(math.radians(14)), math.tan(math.radians(24)), -6 * WIDTH
     surface = lambda x: 0.02 - t1 * x if x > xb else 0.02 - t1 * xb - t2 * (x - xb)  # noqa: E731
-    pos, disp, column = columns_cut_by(surface, n_columns=14)
-    planes = analysis.fit_failure_surface(surface_points(pos, disp, column))
+    return surface_points(*columns_cut_by(surface, n_columns=14))
+
+
+def noisy_straight_points():
+    """12 failure points on a 20 degree line, scattered by 4 mm."""
+    x = -np.arange(1, 13) * WIDTH
+    return list(zip(x, 0.02 - math.tan(math.radians(20)) * x + np.random.default_rng(3).normal(0, 0.004, len(x))))
+
+
+def test_two_failure_surfaces_14_and_24_degrees():
+    planes = analysis.fit_failure_surface(points_on_two_surfaces())
     assert [round(p.phi_deg) for p in planes] == [14, 24]
 
 
 def test_noisy_straight_surface_stays_one_plane():
-    rng = np.random.default_rng(3)
-    x = -np.arange(1, 13) * WIDTH
-    points = list(zip(x, 0.02 - math.tan(math.radians(20)) * x + rng.normal(0, 0.004, len(x))))
-    planes = analysis.fit_failure_surface(points)
+    planes = analysis.fit_failure_surface(noisy_straight_points())
     assert len(planes) == 1
     assert planes[0].phi_deg == pytest.approx(20, abs=2)
 
@@ -186,11 +193,7 @@ def test_the_split_p_value_is_exact_where_only_one_split_is_possible():
 
 
 def test_the_split_p_value_tells_two_surfaces_from_one():
-    t1, t2, xb = math.tan(math.radians(14)), math.tan(math.radians(24)), -6 * WIDTH
-    surface = lambda x: 0.02 - t1 * x if x > xb else 0.02 - t1 * xb - t2 * (x - xb)  # noqa: E731
-    pos, disp, column = columns_cut_by(surface, n_columns=14)
-    assert analysis.split_p_value(surface_points(pos, disp, column)) < 1e-3
-    x = -np.arange(1, 13) * WIDTH
-    noisy = list(zip(x, 0.02 - math.tan(math.radians(20)) * x + np.random.default_rng(3).normal(0, 0.004, len(x))))
+    assert analysis.split_p_value(points_on_two_surfaces()) < 1e-3
+    noisy = noisy_straight_points()
     assert analysis.split_p_value(noisy) > 0.05
     assert analysis.split_p_value(noisy[:5]) is None
