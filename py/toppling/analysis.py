@@ -121,8 +121,13 @@ def _best_split(p: np.ndarray) -> Optional[tuple[Plane, Plane, float]]:
     return best
 
 
-def _toe_first(points: Sequence[tuple[float, float]]) -> np.ndarray:
-    return np.array(sorted(points, key=lambda q: -q[0]))  # the toe has the largest x
+def _one_and_split(points: Sequence[tuple[float, float]]
+                   ) -> tuple[Plane, float, Optional[tuple[Plane, Plane, float]], int]:
+    """The one line through the points with its squared residual, their best split
+    (``_best_split``) and how many points there are."""
+    p = np.array(sorted(points, key=lambda q: -q[0]))  # toe first: the toe has the largest x
+    one, sse1 = _line(p[:, 0], p[:, 1])
+    return one, sse1, _best_split(p), len(p)
 
 
 def fit_failure_surface(points: Sequence[tuple[float, float]], split_gain: float = 4.0,
@@ -130,9 +135,7 @@ def fit_failure_surface(points: Sequence[tuple[float, float]], split_gain: float
     """One or two lines through the failure points, ordered from the toe into the slope."""
     if len(points) < 2:
         raise ValueError(f"{len(points)} failure points: a failure surface needs at least 2")
-    p = _toe_first(points)
-    one, sse1 = _line(p[:, 0], p[:, 1])
-    best = _best_split(p)
+    one, sse1, best, _ = _one_and_split(points)
     if best and best[2] * split_gain < sse1 and abs(best[0].phi_deg - best[1].phi_deg) >= min_angle_difference:
         return [best[0], best[1]]
     return [one]
@@ -145,12 +148,10 @@ def split_p_value(points: Sequence[tuple[float, float]]) -> Optional[float]:
     one plane explains the points, one below it is not proof of two. None below 6 points (no
     split into two lines of >= 3).
     ``fit_failure_surface``'s fourfold gain is p = 4^(-(n - 4) / 2): 0.06 for 8 points."""
-    p = _toe_first(points)
-    best = _best_split(p)
-    if best is None:
+    if len(points) < 6:
         return None
-    sse1 = _line(p[:, 0], p[:, 1])[1]
-    return 1.0 if sse1 <= 0 else float((best[2] / sse1) ** ((len(p) - 4) / 2))
+    _, sse1, best, n = _one_and_split(points)
+    return 1.0 if sse1 <= 0 else float((best[2] / sse1) ** ((n - 4) / 2))
 
 
 def zone(top_displacement: float, still_moving: bool, base_displacement: float, still: float) -> str:

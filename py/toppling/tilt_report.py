@@ -42,7 +42,8 @@ def report_failure(run: TiltRun, out: str, thesis: dict, name: str) -> None:
         failure_tilt_deg=tilt,
         failed_in_first_stage=len(state["stages"]) == 1,  # then failure_tilt_deg is only an upper bound
         phi_deg=[p.phi_deg for p in result["planes"]],
-        planes=len(result["planes"]), two_planes_p=result["split_p"], s_over_h=result["s_over_h"], t_over_h=result["t_over_h"],
+        planes=len(result["planes"]), two_planes_p=result["split_p"],
+        s_over_h=result["s_over_h"], t_over_h=result["t_over_h"],
         zones={analysis.column_label(k + 1): z for k, z in enumerate(result["zones"])},
         failure_points=result["failure_points"], slope_height=result["height"], thesis=thesis, **run.record())
     output.write_summary(out, state["inputs"], **summary)
