@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import json
+import math
 import os
 import time
 from typing import Any, Callable, Optional, Sequence
@@ -132,6 +133,13 @@ class MonitoringPoints:
 
     def total(self, label: str) -> list[float]:
         return [(dx * dx + dy * dy) ** 0.5 for dx, dy in zip(self.x[label], self.y[label])]
+
+    def direction(self, label: str, still: float) -> list[float]:
+        """Y/X, the direction of the point's displacement since the start (the thesis' dY/dX,
+        Fig 5-21 c: a steady value is a steady sense of motion); NaN while the point has moved
+        less than ``still`` [m], where the ratio of two round-off-sized numbers is noise."""
+        return [dy / dx if dx != 0 and (dx * dx + dy * dy) ** 0.5 >= still else math.nan
+                for dx, dy in zip(self.x[label], self.y[label])]
 
     def rate_since(self, label: str, since: float) -> float:
         """How fast [m/s] the point's total displacement changed from the record nearest the

@@ -82,21 +82,27 @@ def tilt_history(out: str, energy: Sequence[tuple[float, float, float]], points:
     return output.save_figure(fig, out, "tilt_history")
 
 
-def monitoring(out: str, points: MonitoringPoints, labels: Sequence[str]) -> str:
-    """X, Y, dY/dX and total displacement of the labelled points against time (Fig 5-21)."""
+def monitoring(out: str, points: MonitoringPoints, labels: Sequence[str], still: float = 1e-4,
+               normal_dydx: Optional[float] = None) -> str:
+    """X, Y, the direction Y/X (the thesis' dY/dX, drawn once a point has moved ``still`` [m])
+    and total displacement of the labelled points against time (Fig 5-21); ``normal_dydx`` draws
+    the direction of the main joints' normal, which a toppling column's top passes."""
     fig, axes = plt.subplots(2, 2, figsize=(10, 7))
     t = np.array(points.time)
     for label in labels:
         x, y = 1e3 * np.array(points.x[label]), 1e3 * np.array(points.y[label])
         axes[0, 0].plot(t, x, label=label)
         axes[0, 1].plot(t, y, label=label)
-        with np.errstate(divide="ignore", invalid="ignore"):
-            axes[1, 0].plot(t[1:], np.diff(y) / np.diff(x), label=label)
+        axes[1, 0].plot(t, points.direction(label, still), label=label)
         axes[1, 1].plot(t, np.hypot(x, y), label=label)
-    for ax, ylabel in zip(axes.flat, ("X (mm)", "Y (mm)", "dY/dX", "total displacement (mm)")):
+    for ax, ylabel in zip(axes.flat, ("X (mm)", "Y (mm)", f"dY/dX = Y/X (once moved {1e3 * still:g} mm)",
+                                      "total displacement (mm)")):
         ax.set_xlabel("simulated time (s)")
         ax.set_ylabel(ylabel)
         ax.grid(True, alpha=0.3)
+    if normal_dydx is not None:
+        normal = axes[1, 0].axhline(normal_dydx, color="r", ls="--", lw=1, label="normal to the main joints")
+        axes[1, 0].legend(handles=[normal], fontsize=7, loc="lower left")
     axes[1, 0].set_ylim(-5, 5)
     axes[0, 0].legend(fontsize=7)
     return output.save_figure(fig, out, "monitoring_points")

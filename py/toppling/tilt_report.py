@@ -8,6 +8,10 @@ from yade import O
 from toppling import analysis, output, plots, scene
 from toppling.tilt_run import TiltRun, arrested_text, ramp_warning
 
+# The records are in the table's frame, in which the columns stand upright: the main joints'
+# normal runs along the table, Y/X = 0, and a column top toppling outwards falls below it.
+TABLE_NORMAL_DYDX = 0.0
+
 
 def report(run: TiltRun, out: str, thesis: dict, name: str) -> None:
     """Write the run's summary and figures into ``out`` and print its result beside ``thesis``
@@ -28,7 +32,7 @@ def report_stable(run: TiltRun, out: str, thesis: dict) -> None:
     output.write_summary(out, state["inputs"], failure_tilt_deg=None, stable_up_to_deg=state["stages"][-1]["tilt"],
                          phi_deg=[], s_over_h=None, t_over_h=None, top_displacement_mm=tops, **record)
     plots.tilt_history(out, state["energy"], points, None)
-    plots.monitoring(out, points, points.labels[::2])
+    plots.monitoring(out, points, points.labels[::2], normal_dydx=TABLE_NORMAL_DYDX)
     arrested = arrested_text(record["arrested_failures"])
     print(f"no failure up to max_tilt = {run.protocol.max_tilt} deg{arrested}: run again with a higher max_tilt; "
           "column tops moved " + ", ".join(f"{label} {mm:.2f}" for label, mm in tops.items()) + " mm")
@@ -73,4 +77,4 @@ def plot_failure(run: TiltRun, out: str, result: dict, title: str, name: str) ->
     plots.slope(out, "slope_after", result["now"], radii, result["disp"], cracks, list(law.breakMode),
                 result["planes"], toe=(run.layout.toe_x, 0.0), limits=view, title=title)
     plots.tilt_history(out, run.state["energy"], points, run.failure_tilt)
-    plots.monitoring(out, points, points.labels[::2])
+    plots.monitoring(out, points, points.labels[::2], normal_dydx=TABLE_NORMAL_DYDX)

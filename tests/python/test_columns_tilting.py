@@ -284,6 +284,18 @@ def test_rate_since_is_the_change_of_total_displacement_per_second():
     assert points.rate_since("A-1", 3.0) == 0.0
 
 
+def test_direction_is_the_total_displacement_s_y_over_x_once_the_point_has_moved():
+    """Y/X of the displacement since the start (the last step's own dY/dX, -1, would be noise
+    at rest); none while the point has moved less than ``still`` (a ringing top)."""
+    points = monitor.MonitoringPoints.from_dict({"labels": ["G-7"], "ids": [0], "reference": [(0, 0, 0)],
+                                                 "time": [0.0, 0.1, 0.2, 0.3],
+                                                 "x": {"G-7": [0.0, 2e-6, 1e-3, 2e-3]},
+                                                 "y": {"G-7": [0.0, -3e-6, 0.0, -1e-3]}})
+    direction = points.direction("G-7", still=1e-4)
+    assert all(math.isnan(d) for d in direction[:2])
+    assert direction[2:] == [0.0, -0.5]
+
+
 def test_kinetic_energy_above_the_floor_leaves_out_a_disc_fallen_below_it(empty_scene):
     """Closed form: 1/2 m v^2 + 1/2 I w^2 of the discs above the floor, the scene's total when
     none is below it; the progress line prints that energy."""
