@@ -167,8 +167,11 @@ class TiltRun:
                           remaining_time=max(0.0, length - (O.time - phase["start"])))
         else:  # the level table's length is not known; a stage's ETA is to max_tilt, an upper bound (it ends at failure)
             span = p.max_tilt - p.start_tilt
+            bound = None
+            if phase["name"] == "stage":  # a stage of a fine packing can ring for hours before its time limit
+                bound = max(0.0, self.criteria.max_stage_time - (O.time - phase["start"]))
             self.progress(f"tilt {tilting.current_tilt():.1f} deg",
-                          (self.state["tilt"] - p.start_tilt) / span if span > 0 else None)
+                          (self.state["tilt"] - p.start_tilt) / span if span > 0 else None, phase_bound=bound)
         if self.progress.wall_time - self.last_save > p.checkpoint_every:  # a stage of a fine packing runs for hours
             self.save_checkpoint()
 

@@ -262,6 +262,20 @@ def test_progress_eta_of_a_phase_of_known_length_is_its_remaining_time_at_the_cu
     assert "Ek = 1.250e-03 J" in lines[0]  # the energy it was given
 
 
+def test_progress_gives_the_wall_time_to_a_stage_s_time_limit_at_the_current_rate(empty_scene, monkeypatch, capsys):
+    """A stage ringing towards its time limit: the ETA to max_tilt cannot see its end, its bound can."""
+    O.engines = scene.engines(timestepper=False)
+    wall = iter([100.0, 100.0, 110.0])
+    monkeypatch.setattr(monitor.time, "time", lambda: next(wall))
+    progress = monitor.Progress(every=5.0, energy=lambda: 0.0)
+    progress("stage", fraction_done=0.5, phase_bound=1.0)  # no rate yet
+    O.dt = 0.01
+    scene.run_steps(2)  # 0.02 simulated s in 10 wall s: 1.5 s more take 750 s
+    progress("stage", fraction_done=0.5, phase_bound=1.5)
+    lines = capsys.readouterr().out.splitlines()
+    assert lines[0].endswith("ETA ?") and lines[1].endswith("ETA ? (this stage ends within 750 s)")
+
+
 def test_progress_eta_of_a_resumed_run_counts_only_the_work_done_in_this_process(empty_scene, monkeypatch, capsys):
     """Resumed halfway (the earlier process did half the work): the quarter done in this one took
     100 s, so the quarter left takes 100 s, not the 20 s that half-done-in-120-s would say."""
