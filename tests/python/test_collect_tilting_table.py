@@ -75,7 +75,7 @@ def test_seeds_give_the_spread_of_one_model_and_a_finer_packing_meets_its_own_se
     runs = {"s1": summary(0.008, 32.0, [8.1]), "s2": summary(0.008, 34.0, [18.5], seed=2),
             "s3": summary(0.008, 32.0, [12.0], seed=3), "fine_s2": summary(0.004, 33.0, [17.0], seed=2),
             "alone": summary(0.004, 30.0, [10.0], strength=100e3)}
-    assert collect.seed_spread(runs) == ["| ideal 130 kPa R 2–8 mm, safety 0.5 | 1, 2, 3 | 32.0–34.0 | 32.7 ± 1.2 | 3 of 3 | 8.1–18.5 |"]
+    assert collect.seed_spread(runs) == ["| ideal 130 kPa R 2–8 mm, safety 0.5 | 1, 2, 3 | 32.0–34.0 | 32.7 ± 1.2 | 3 of 3 | -2.3 ± 0.7: undecided | 8.1–18.5 |"]
     assert collect.size_check(runs) == ["| fine_s2 vs s2 | 1.05 vs 1.05 | -1.0 | -1.5 | yes |"]
 
 
@@ -88,7 +88,7 @@ def test_a_seed_that_stands_counts_outside_the_target_and_outside_the_figures():
     runs = {"s1": summary(0.004, 36.0, [17.0]), "s2": summary(0.004, 30.0, [14.4], seed=2),
             "s3": {**summary(0.004, None, [], seed=3), "stable_up_to_deg": 44.0}}
     assert collect.seed_spread(runs) == ["| ideal 130 kPa R 1–4 mm, safety 0.5 | 1, 2, 3 | 30.0–36.0 | 33.0 ± 4.2 | "
-                                         "1 of 3 (1 stood) | 14.4–17.0 |"]
+                                         "1 of 3 (1 stood) | -2.0 ± 3.0: undecided (2 draws) | 14.4–17.0 |"]
 
 
 def test_a_failure_by_the_stage_time_limit_is_marked_in_the_table(tmp_path, capsys):
@@ -140,7 +140,7 @@ def test_a_first_stage_failure_is_an_upper_bound_and_a_rerun_from_lower_replaces
             "s3_low": {**summary(0.004, 28.0, [2.8], seed=3, start_tilt=16.0), "failed_in_first_stage": False},
             "s4": {**summary(0.004, 26.0, [11.4], seed=4), "failed_in_first_stage": True}}
     assert collect.seed_spread(runs) == ["| ideal 130 kPa R 1–4 mm, safety 0.5 | 1, 2, 3, 4 | 28.0–42.0 | 35.3 ± 7.0 | "
-                                         "1 of 4 (at most 26) | 2.8–17.0 |"]
+                                         "1 of 4 (at most 26) | +0.3 ± 4.1: undecided | 2.8–17.0 |"]
 
 
 def seeds(rmax: float, tilts: list, phis: list, **kw) -> dict[str, dict]:
@@ -191,9 +191,10 @@ def test_a_joint_friction_and_joints_between_pieces_name_their_own_seed_group():
                                        ("_mu", {"base_joint_friction": 0.23, "joint_pieces": 1}, (17.0, 37.0)))
             for seed, tilt in zip((1, 2), tilts)}
     assert collect.seed_spread(runs) == [
-        "| random 130 kPa R 2–8 mm, safety 0.5 | 1, 2 | 15.0–25.0 | 20.0 ± 7.1 | 0 of 2 | 20.0–20.0 |",
+        "| random 130 kPa R 2–8 mm, safety 0.5 | 1, 2 | 15.0–25.0 | 20.0 ± 7.1 | 0 of 2 | +1.0 ± 5.0: undecided (2 draws) "
+        "| 20.0–20.0 |",
         "| random 130 kPa R 2–8 mm, safety 0.5, joints between pieces of rock, base joint friction 0.23 | 1, 2 | "
-        "17.0–37.0 | 27.0 ± 14.1 | 1 of 2 | 20.0–20.0 |"]
+        "17.0–37.0 | 27.0 ± 14.1 | 1 of 2 | +8.0 ± 10.0: undecided (2 draws) | 20.0–20.0 |"]
 
 
 def test_the_random_arrangement_is_spread_over_packings_and_layouts_where_several_layouts_were_run():
@@ -203,6 +204,16 @@ def test_the_random_arrangement_is_spread_over_packings_and_layouts_where_severa
     runs["other_model"] = summary(0.004, 40.0, [20.0], arrangement="random", strength=65e3, seed=2)
     assert collect.seed_spread(runs, collect.DRAW) == [
         "| random 130 kPa R 1–4 mm, safety 0.5 | 1/1, 1/2, 1/3, 2/1, 3/1 | 15.0–29.0 | 20.5 ± 6.0 | 2 of 5 (1 stood) | "
-        "20.0–20.0 |"]
+        "+1.5 ± 3.0: undecided | 20.0–20.0 |"]
     assert collect.seed_spread(runs) == [  # the packing seeds of layout 1 alone
-        "| random 130 kPa R 1–4 mm, safety 0.5 | 1, 2, 3 | 15.0–29.0 | 21.0 ± 7.2 | 1 of 3 | 20.0–20.0 |"]
+        "| random 130 kPa R 1–4 mm, safety 0.5 | 1, 2, 3 | 15.0–29.0 | 21.0 ± 7.2 | 1 of 3 | +2.0 ± 4.2: undecided "
+        "| 20.0–20.0 |"]
+
+
+def test_the_mean_over_draws_is_within_the_thesis_tolerance_by_two_standard_errors_or_outside_by_two():
+    def spread(tilts):
+        runs = seeds(0.004, tilts, [15.0] * len(tilts), arrangement="random")
+        return collect.seed_spread(runs)[0].split(" | ")[5]
+    assert spread([17.0, 19.0, 21.0, 19.0]) == "+0.0 ± 0.8: yes"  # 0 + 2 x 0.82 <= 3
+    assert spread([25.0, 27.0, 29.0, 27.0]) == "+8.0 ± 0.8: no"  # 8 - 2 x 0.82 > 3
+    assert spread([15.0, 19.0, 23.0, 19.0]) == "+0.0 ± 1.6: undecided"  # on target, but 0 + 2 x 1.63 > 3
