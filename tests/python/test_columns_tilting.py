@@ -7,7 +7,7 @@ import pytest
 from yade import O, utils
 from yade.wrapper import ParallelBondMat
 
-from conftest import ROCK
+from conftest import ROCK, load_script
 from toppling import analysis, columns, incline, monitor, scene, tilting
 
 
@@ -229,6 +229,21 @@ def test_same_command_continues_its_own_checkpoint_and_no_other(empty_scene, tmp
     assert checkpoint.continues({**run, "shrink": 0}, resume=-1, added={"shrink": 0})
     with pytest.raises(ValueError, match=r"shrink 0 there, 1 here"):
         checkpoint.continues({**run, "shrink": 1}, resume=-1, added={"shrink": 0})
+
+
+def test_stage_speeds_names_the_column_that_moves_and_a_disc_rattling_inside_a_column_at_rest(
+        empty_scene, tmp_path, capsys):
+    """scripts/stage_speeds.py: a column's centroid speed (what the stage judges) beside its fastest disc."""
+    ids = [O.bodies.append(scene.disc((0.01 * k, 0.0), 0.004, ParallelBondMat(**ROCK))) for k in range(3)]
+    for i, v in zip(ids, [(1e-3, 0, 0), (-1e-3, 0, 0), (0, 2e-3, 0)]):
+        O.bodies[i].state.vel = v
+    monitor.Checkpoint(str(tmp_path)).save({"phase": {"name": "stage", "start": 0.0}, "tilt": 22.0,
+                                            "watched_columns": ["A-1", "B-2"], "watched": [ids[:2], ids[2:]]})
+    load_script("stage_speeds").main(str(tmp_path))
+    lines = capsys.readouterr().out.splitlines()
+    assert "phase stage since t = 0.0000 s, tilt 22 deg" in lines[0]
+    assert "A-1   2 discs  centroid 0.00e+00 mm/s  fastest disc 1.00e+00 mm/s" in lines[1]
+    assert "B-2   1 discs  centroid 2.00e+00 mm/s  fastest disc 2.00e+00 mm/s" in lines[2]
 
 
 def test_missing_checkpoint_says_what_to_do(tmp_path):
