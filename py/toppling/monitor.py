@@ -29,9 +29,9 @@ class Progress:
         self.first_fraction: Optional[tuple[float, float]] = None  # (wall time, fraction done)
 
     def __call__(self, label: str, fraction_done: Optional[float] = None, force: bool = False,
-                 remaining_time: Optional[float] = None, phase_bound: Optional[float] = None) -> None:
-        """``phase_bound``: simulated seconds within which the current phase ends at the latest
-        (a stage's time limit), printed as wall time beside an ETA that cannot see the phase's end."""
+                 remaining_time: Optional[float] = None, stage_bound: Optional[float] = None) -> None:
+        """``stage_bound``: simulated seconds within which the current stage ends at the latest
+        (its time limit), printed as wall time beside an ETA that cannot see the stage's end."""
         now = time.time()
         if not force and now - self.last < self.every:
             return
@@ -48,8 +48,8 @@ class Progress:
             since, done_before = self.first_fraction
             if fraction_done > done_before:
                 eta = f"{(now - since) * (1 - fraction_done) / (fraction_done - done_before):.0f} s"
-        if phase_bound is not None and wall_per_sim is not None:
-            eta += f" (this stage ends within {phase_bound * wall_per_sim:.0f} s)"
+        if stage_bound is not None and wall_per_sim is not None:
+            eta += f" (this stage ends within {stage_bound * wall_per_sim:.0f} s)"
         self.last, self.last_sim_time = now, O.time
         print(f"[{elapsed:7.0f} s] {label}  step {O.iter}  t = {O.time:.4f} s  "
               f"Ek = {self.energy():.3e} J  broken bonds {scene.broken_bonds()}  ETA {eta}",

@@ -171,7 +171,7 @@ class TiltRun:
             if phase["name"] == "stage":  # a stage of a fine packing can ring for hours before its time limit
                 bound = max(0.0, self.criteria.max_stage_time - (O.time - phase["start"]))
             self.progress(f"tilt {tilting.current_tilt():.1f} deg",
-                          (self.state["tilt"] - p.start_tilt) / span if span > 0 else None, phase_bound=bound)
+                          (self.state["tilt"] - p.start_tilt) / span if span > 0 else None, stage_bound=bound)
         if self.progress.wall_time - self.last_save > p.checkpoint_every:  # a stage of a fine packing runs for hours
             self.save_checkpoint()
 

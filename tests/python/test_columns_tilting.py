@@ -283,10 +283,10 @@ def test_progress_gives_the_wall_time_to_a_stage_s_time_limit_at_the_current_rat
     wall = iter([100.0, 100.0, 110.0])
     monkeypatch.setattr(monitor.time, "time", lambda: next(wall))
     progress = monitor.Progress(every=5.0, energy=lambda: 0.0)
-    progress("stage", fraction_done=0.5, phase_bound=1.0)  # no rate yet
+    progress("stage", fraction_done=0.5, stage_bound=1.0)  # no rate yet
     O.dt = 0.01
     scene.run_steps(2)  # 0.02 simulated s in 10 wall s: 1.5 s more take 750 s
-    progress("stage", fraction_done=0.5, phase_bound=1.5)
+    progress("stage", fraction_done=0.5, stage_bound=1.5)
     lines = capsys.readouterr().out.splitlines()
     assert lines[0].endswith("ETA ?") and lines[1].endswith("ETA ? (this stage ends within 750 s)")
 
