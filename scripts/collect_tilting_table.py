@@ -12,7 +12,9 @@ failure tilt (range, mean, standard deviation, seeds within 3 deg of the thesis,
 the mean is, by two standard errors) and phi over
 packings that differ only in their seed, and over the random arrangement's draws (packing seed and
 layout seed) where several layouts were run; and the size check on the means over seeds, decided
-only when two standard errors of the difference keep it inside (or outside) the 2 deg.
+only when two standard errors of the difference keep it inside (or outside) the 2 deg; and what
+a stronger bond does to the same packings (the shift packing by packing, and the stronger mean
+it gives when added to the weaker one's mean over all its seeds).
 """
 import fnmatch
 import glob
@@ -349,6 +351,47 @@ def size_over_seeds_row(key: SeedGroup, group: list[dict], coarse_key: SeedGroup
     return [f"| {group_name(key)} vs {coarse} | {cells[0]} | {cells[1]} | {tilt_text} | {phi_text} | {verdict} |"]
 
 
+def without_strength(key: SeedGroup) -> SeedGroup:
+    """``key`` with its bond tensile strength left out: the groups that differ only in it."""
+    return key._replace(model=tuple((name, None if name == "bond_tensile_strength" else value)
+                                    for name, value in key.model))
+
+
+def strength_pairs(runs: dict[str, dict]) -> list[str]:
+    """Lines pairing each seed group with a stronger one of the same model, packing size and
+    numerics: the failure tilt's shift over the packings run at both strengths (each pair shares
+    its packing, so the packings' scatter drops out), and the stronger strength's mean estimated
+    as the weaker one's mean over all its seeds plus that shift, against the thesis
+    (``within``). A packing pairs only where it failed above its first stage at both strengths."""
+    groups = seed_groups(runs)
+    lines = []
+    for weak_key, weak in groups.items():
+        for strong_key, strong in groups.items():
+            strengths = [dict(k.model)["bond_tensile_strength"] for k in (weak_key, strong_key)]
+            if without_strength(weak_key) != without_strength(strong_key) or not 0 < strengths[0] < strengths[1]:
+                continue
+            lines += strength_pair_row(weak_key, failed_seeds(weak), strengths[1], failed_seeds(strong))
+    return lines
+
+
+def strength_pair_row(weak_key: SeedGroup, weak: list[dict], strength: float, strong: list[dict]) -> list[str]:
+    """The row of strength_pairs for one weaker and one stronger group; none under two pairs."""
+    stronger = {draw(s, SEED): s["failure_tilt_deg"] for s in strong}
+    pairs = [(draw(s, SEED), stronger[draw(s, SEED)] - s["failure_tilt_deg"]) for s in weak if draw(s, SEED) in stronger]
+    if len(pairs) < 2 or len(weak) < 2:
+        return []
+    shifts = [shift for _, shift in pairs]
+    tilts = [s["failure_tilt_deg"] for s in weak]
+    shift, shift_se = statistics.mean(shifts), statistics.stdev(shifts) / len(shifts) ** 0.5
+    estimate = statistics.mean(tilts) + shift
+    se = (statistics.variance(tilts) / len(tilts) + shift_se ** 2) ** 0.5
+    target = weak[0]["thesis"]["failure_tilt_deg"]
+    seeds = ", ".join(f"{seed:g}" for (seed,), _ in sorted(pairs))
+    return [f"| {group_name(weak_key)} | {strength / 1e3:g} kPa | {seeds} | {shift:+.1f} ± {shift_se:.1f} | "
+            f"{len(tilts)}: {stats_text(tilts)} | {estimate:.1f} ± {se:.1f} | "
+            f"{estimate - target:+.1f} ± {se:.1f}: {within(estimate - target, se, TARGET_TOLERANCE_DEG)} |"]
+
+
 def joint_stiffness_check(runs: dict[str, dict]) -> list[str]:
     """Lines comparing each run with softened joints (joint_stiffness_scale < 1) with the run
     that differs from it only in that, at Table 5-3's stiffness: the failure tilt and phi it
@@ -415,6 +458,10 @@ def main(folder: str, patterns: Sequence[str] = ("*",)) -> None:
             f"error; within {SIZE_TOLERANCE_DEG:g} deg by two standard errors?)",
             ["model vs coarser", "finer: seeds failed, failure tilt (°), φ (°)", "coarser: the same",
              "failure tilt (°)", "φ (°)", "within tolerance"], size_over_seeds(runs))
+    section("Bond strength on the same packings (a stronger group minus the weaker, packing by packing; the "
+            "stronger's mean estimated as the weaker's mean over all its seeds plus that shift ± the standard error)",
+            ["weaker model", "stronger", "paired seeds", "shift (°)", "weaker: seeds failed, failure tilt (°)",
+             "estimated mean (°)", MEAN_AGAINST_HEADER], strength_pairs(runs))
     section("Joint stiffness (softened minus Table 5-3's; time step and wall time: how many times larger / smaller)",
             ["runs", "joint stiffness x", "failure tilt (°)", "φ (°)", "mean time step", "wall time"],
             joint_stiffness_check(runs))

@@ -217,3 +217,16 @@ def test_the_mean_over_draws_is_within_the_thesis_tolerance_by_two_standard_erro
     assert spread([17.0, 19.0, 21.0, 19.0]) == "+0.0 ± 0.8: yes"  # 0 + 2 x 0.82 <= 3
     assert spread([25.0, 27.0, 29.0, 27.0]) == "+8.0 ± 0.8: no"  # 8 - 2 x 0.82 > 3
     assert spread([15.0, 19.0, 23.0, 19.0]) == "+0.0 ± 1.6: undecided"  # on target, but 0 + 2 x 1.63 > 3
+
+
+def test_a_stronger_bond_is_measured_on_the_same_packings_and_added_to_the_weaker_mean():
+    weak = seeds(0.004, [33.0, 35.0, 34.0, 36.0], [15.0] * 4, strength=85e3)
+    strong = seeds(0.004, [35.0, 38.0, 36.0], [15.0] * 3, strength=95e3)
+    unpaired = {"strong_s7": summary(0.004, 50.0, [15.0], strength=95e3, seed=7),
+                "strong_s4": {**summary(0.004, None, [], strength=95e3, seed=4), "stable_up_to_deg": 45.0},
+                "other_model_s1": summary(0.004, 20.0, [15.0], strength=95e3, seed=1, shrink_overlaps=1)}
+    rows = collect.strength_pairs({**weak, **{f"x{k}": s for k, s in strong.items()}, **unpaired})
+    # shifts 2, 3, 2: 2.33 +- 0.33; 34.5 + 2.33 = 36.83 +- (1.67 / 4 + 0.33^2)^0.5 = 0.73; 1.83 + 1.45 > 3
+    assert rows == ["| ideal 85 kPa R 1–4 mm, safety 0.5 | 95 kPa | 1, 2, 3 | +2.3 ± 0.3 | 4: 34.5 ± 1.3 | "
+                    "36.8 ± 0.7 | +1.8 ± 0.7: undecided |"]
+    assert collect.strength_pairs({**weak, "strong_s1": strong["r0.004_s1"]}) == []  # one pair says nothing
