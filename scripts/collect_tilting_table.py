@@ -377,16 +377,16 @@ def strength_pairs(runs: dict[str, dict]) -> list[str]:
 def strength_pair_row(weak_key: SeedGroup, weak: list[dict], strength: float, strong: list[dict]) -> list[str]:
     """The row of strength_pairs for one weaker and one stronger group; none under two pairs."""
     stronger = {draw(s, SEED): s["failure_tilt_deg"] for s in strong}
-    pairs = [(draw(s, SEED), stronger[draw(s, SEED)] - s["failure_tilt_deg"]) for s in weak if draw(s, SEED) in stronger]
+    pairs = {draw(s, SEED): s["failure_tilt_deg"] for s in weak if draw(s, SEED) in stronger}
     if len(pairs) < 2 or len(weak) < 2:
         return []
-    shifts = [shift for _, shift in pairs]
+    shifts = [stronger[seed] - tilt for seed, tilt in pairs.items()]
     tilts = [s["failure_tilt_deg"] for s in weak]
     shift, shift_se = statistics.mean(shifts), statistics.stdev(shifts) / len(shifts) ** 0.5
     estimate = statistics.mean(tilts) + shift
     se = (statistics.variance(tilts) / len(tilts) + shift_se ** 2) ** 0.5
     target = weak[0]["thesis"]["failure_tilt_deg"]
-    seeds = ", ".join(f"{seed:g}" for (seed,), _ in sorted(pairs))
+    seeds = ", ".join(f"{seed:g}" for (seed,) in sorted(pairs))
     return [f"| {group_name(weak_key)} | {strength / 1e3:g} kPa | {seeds} | {shift:+.1f} ± {shift_se:.1f} | "
             f"{len(tilts)}: {stats_text(tilts)} | {estimate:.1f} ± {se:.1f} | "
             f"{estimate - target:+.1f} ± {se:.1f}: {within(estimate - target, se, TARGET_TOLERANCE_DEG)} |"]
