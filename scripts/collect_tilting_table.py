@@ -127,13 +127,13 @@ BONDINGS = (same_gap, same_bond_density)
 def next_coarser(group: list[tuple[str, dict]], s: dict, bonding) -> Optional[tuple[str, dict]]:
     """The run of ``group`` of the same packing seed with the next larger rmax than ``s`` that
     ``bonding(s, run)`` accepts, of the same numerical settings where there is one, and of those
-    one that did not fail in its first stage (a rerun from a lower start_tilt) where there is
-    one. Another seed's packing is no pair: seeds are compared on their means (size_over_seeds)."""
+    the least in doubt (``doubt``: a rerun from a lower start_tilt). Another seed's packing is no
+    pair: seeds are compared on their means (size_over_seeds)."""
     seed = numerics(s["inputs"])["seed"]
     coarser = [run for run in group if run[1]["inputs"]["rmax"] > s["inputs"]["rmax"]
                and bonding(s["inputs"], run[1]["inputs"]) and numerics(run[1]["inputs"])["seed"] == seed]
     same = [run for run in coarser if numerics(run[1]["inputs"]) == numerics(s["inputs"])]
-    return min(same or coarser, key=lambda run: (run[1]["inputs"]["rmax"], first_stage_failure(run[1]))) \
+    return min(same or coarser, key=lambda run: (run[1]["inputs"]["rmax"], doubt(run[1]))) \
         if coarser else None
 
 
@@ -173,13 +173,26 @@ def first_stage_failure(s: dict) -> bool:
     return s["failure_tilt_deg"] is not None and s.get("failed_in_first_stage", False)
 
 
+def entered_cracked(s: dict) -> bool:
+    """Whether bonds broke on the ramp to start_tilt: the run warned that its failure tilt may be
+    low and that a lower start_tilt judges in stages the tilts the ramp passed."""
+    return bool((s.get("breaks_before_stages") or {}).get("ramp"))
+
+
+def doubt(s: dict) -> tuple[bool, bool]:
+    """How far a run's failure tilt is in doubt, least first: a first-stage failure is only an
+    upper bound, a slope cracked by the ramp may fail low. A rerun of the same packing from a
+    lower start_tilt clears both and replaces the run."""
+    return first_stage_failure(s), entered_cracked(s)
+
+
 def one_per_draw(group: list[dict], drawn_by: Sequence[str] = SEED) -> list[dict]:
-    """One run per draw (the values of ``drawn_by``): one that did not fail in its first stage
-    where there is one (the same packing rerun from a lower start_tilt)."""
+    """One run per draw (the values of ``drawn_by``): the least in doubt (``doubt``), the first
+    listed of those."""
     chosen: dict[tuple, dict] = {}
     for s in group:
         key = draw(s, drawn_by)
-        if key not in chosen or first_stage_failure(chosen[key]) and not first_stage_failure(s):
+        if key not in chosen or doubt(s) < doubt(chosen[key]):
             chosen[key] = s
     return [chosen[key] for key in sorted(chosen)]
 
