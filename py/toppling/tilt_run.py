@@ -101,7 +101,9 @@ def ramp_warning(breaks: dict) -> str:
                       "own weight: shrink the overlaps before bonding (packing.shrink_overlaps) or raise the bond "
                       "strengths")
     if breaks["ramp"]:
-        advice.append("rerun with a lower start_tilt to judge in stages the tilts the ramp passed")
+        first = breaks.get("first_ramp_break_deg")  # not in checkpoints older than it
+        below = f"below {first:.1f} deg, where the ramp broke its first bond," if first is not None else "lower"
+        advice.append(f"rerun with a start_tilt {below} to judge in stages the tilts the ramp passed")
     return (f"WARNING: {breaks['level']} bonds broke on the level table and {breaks['ramp']} on the ramp to "
             "start_tilt: the slope entered its first stage cracked and its failure tilt may be low; "
             + "; ".join(advice))
@@ -282,6 +284,8 @@ class TiltRun:
             tilting.ramp(0.0, p.start_tilt, p.start_tilt / p.tilt_rate, self.on_chunk, start=phase["start"])
             before = state.setdefault("breaks_before_stages", {"level": 0})  # older checkpoints: level's counted here
             before["ramp"] = scene.broken_bonds() - before["level"]
+            if before["ramp"]:
+                before["first_ramp_break_deg"] = self.first_ramp_break(before["level"], phase["start"])
             if warning := ramp_warning(before):  # said now: the user may stop the run rather than wait for its stages
                 print(warning, flush=True)
             phase = self.begin("stage", reference=tilting.centroids(self.watched).tolist())
@@ -298,6 +302,12 @@ class TiltRun:
         if state["failure_tilt"] is not None:
             self.run_after_failure(phase)
         return state["failure_tilt"]
+
+    def first_ramp_break(self, level_breaks: int, start: float) -> float:
+        """The tilt [deg] at which the ramp that began at ``start`` broke its first bond: a rerun
+        from a start_tilt below it ramps the same way up to there and enters its stages intact."""
+        first = min(scene.bond_law().breakTime[level_breaks:])
+        return min(self.protocol.start_tilt, self.protocol.tilt_rate * (first - start))
 
     def run_after_failure(self, phase: dict) -> None:
         """Let the failure surface develop for post_failure_time after the failure (also when a

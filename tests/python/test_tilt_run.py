@@ -108,16 +108,33 @@ def test_a_run_stopped_at_max_tilt_continues_from_its_checkpoint_to_the_same_fai
 
 
 def test_bonds_broken_by_the_ramp_to_the_start_tilt_are_counted_and_reported(empty_scene, tmp_path, capsys):
-    # the bending tension at the column's foot, 3 rho g h^2 sin(alpha) / b, is 17 kPa at 30 deg and
-    # ~0 on the level table (the overlaps shrunk, bonds are stress-free there): 8 kPa breaks on the ramp
+    # the bending tension at the column's foot, 3 rho g h^2 sin(alpha) / b, is 17 kPa at 30 deg for a solid 2 cm
+    # section and ~0 on the level table (the overlaps shrunk, bonds are stress-free there): 8 kPa breaks on the ramp
     run = cantilever_run(tmp_path, protocol(start_tilt=30.0, max_tilt=30.0), tensile_strength=8e3)
     run.run()
     before = run.state["breaks_before_stages"]
-    assert before["level"] == 0 and before["ramp"] > 0
+    assert before["level"] == 0 and before["ramp"] > 0 and 0 < before["first_ramp_break_deg"] < 30
     assert f"WARNING: 0 bonds broke on the level table and {before['ramp']} on the ramp" in capsys.readouterr().out
     tilt_report.report(run, str(tmp_path), {"failure_tilt_deg": 0, "phi_deg": [0]}, "cantilever")
-    assert "rerun with a lower start_tilt" in capsys.readouterr().out
+    assert f"rerun with a start_tilt below {before['first_ramp_break_deg']:.1f} deg" in capsys.readouterr().out
     assert json.loads((tmp_path / "summary.json").read_text())["breaks_before_stages"] == before
+
+
+def ramp_breaks(tmp_path, start_tilt: float) -> dict:
+    """The bonds the ramp to ``start_tilt`` breaks in a fresh cantilever of 8 kPa bonds."""
+    O.reset()
+    run = cantilever_run(tmp_path / f"{start_tilt:.2f}", protocol(start_tilt=start_tilt, max_tilt=start_tilt), 8e3)
+    run.run()
+    return run.state["breaks_before_stages"]
+
+
+def test_a_ramp_stopped_short_of_the_reported_first_break_breaks_no_bond(empty_scene, tmp_path):
+    # the advice's promise: a ramp runs the same way up to the tilt it reports, so a start_tilt half a
+    # degree (10 gravity updates at 50 deg/s) below it enters its stages intact, one above it does not
+    first = ramp_breaks(tmp_path, 30.0)["first_ramp_break_deg"]
+    assert ramp_breaks(tmp_path, first - 0.5)["ramp"] == 0
+    above = ramp_breaks(tmp_path, first + 0.5)
+    assert above["ramp"] > 0 and above["first_ramp_break_deg"] == pytest.approx(first, abs=0.06)
 
 
 def test_bonds_broken_on_the_level_table_are_blamed_on_the_packing_not_the_ramp(empty_scene, tmp_path, capsys):
@@ -129,7 +146,7 @@ def test_bonds_broken_on_the_level_table_are_blamed_on_the_packing_not_the_ramp(
     assert before["level"] > 0 and before["ramp"] == 0
     out = capsys.readouterr().out
     assert f"WARNING: {before['level']} bonds broke on the level table" in out and "packing.shrink_overlaps" in out
-    assert "lower start_tilt" not in out
+    assert "rerun with a start_tilt" not in out
 
 
 def test_a_ramp_that_breaks_no_bond_warns_of_nothing(empty_scene, tmp_path, capsys):
