@@ -174,9 +174,11 @@ def first_stage_failure(s: dict) -> bool:
 
 
 def entered_cracked(s: dict) -> bool:
-    """Whether bonds broke on the ramp to start_tilt: the run warned that its failure tilt may be
-    low and that a lower start_tilt judges in stages the tilts the ramp passed."""
-    return bool((s.get("breaks_before_stages") or {}).get("ramp"))
+    """Whether bonds of the rock broke on the ramp to start_tilt (besides those that freed a
+    loose disc: toppling.bonding.rock_breaks): the run warned that its failure tilt may be low
+    and that a lower start_tilt judges in stages the tilts the ramp passed."""
+    breaks = s.get("breaks_before_stages") or {}
+    return breaks.get("ramp", 0) > breaks.get("loose", {}).get("ramp", 0)
 
 
 def doubt(s: dict) -> tuple[bool, bool]:

@@ -8,7 +8,7 @@ from yade import O, utils
 from yade.wrapper import Sphere
 
 from toppling import packing
-from toppling.scene import limit_timestep
+from toppling.scene import bond_law, limit_timestep
 
 
 def _sphere_ids(ids: Optional[Sequence[int]]) -> list[int]:
@@ -77,3 +77,30 @@ def rock(ids: Sequence[int], min_bonds: int = 2) -> list[int]:
     """The discs of ``ids`` held by at least ``min_bonds`` intact bonds: the rock, without the
     loose discs and pairs that rattle, roll or drop off (which must not count as rock moving)."""
     return [i for i in ids if intact_bonds(i) >= min_bonds]
+
+
+def bonds_before_breaks() -> list[tuple[int, int]]:
+    """For each break the parallel-bond law has recorded, in order, the intact bonds its two
+    discs had just before it: each disc's intact bonds now plus its breaks from that one on
+    (a deleted disc has none now)."""
+    law = bond_law()
+    now = {}
+    later = defaultdict(int)
+    before = []
+    for pair in reversed(list(zip(law.breakId1, law.breakId2))):
+        for i in pair:
+            if i not in now:
+                now[i] = intact_bonds(i) if O.bodies[i] is not None else 0
+            later[i] += 1
+        before.append(tuple(now[i] + later[i] for i in pair))
+    return before[::-1]
+
+
+def rock_breaks(first: int, count: int) -> list[int]:
+    """The indices of the ``count`` recorded breaks from the ``first`` on that cracked the rock
+    (``rock``: both discs held by at least two bonds until then). The others freed a loose disc,
+    held by that bond alone (a disc left without bonds, or a pair bonded only to each other): a
+    joint can leave a sliver of discs bonded across the pore between joint planes by a bond or
+    two, and those breaks let debris come off, they do not crack the rock."""
+    before = bonds_before_breaks()
+    return [k for k in range(first, first + count) if min(before[k]) >= 2]

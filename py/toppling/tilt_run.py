@@ -7,12 +7,12 @@ stopped in (level, ramp, stage, arrest, post, analysis)."""
 from __future__ import annotations
 
 from dataclasses import dataclass, fields
-from typing import Any, Optional
+from typing import Any, Callable, Optional
 
 import numpy as np
 from yade import O
 
-from toppling import analysis, columns, monitor, paraview, scene, tilting
+from toppling import analysis, bonding, columns, monitor, paraview, scene, tilting
 
 # parameters that may change between a run and its continuation
 FREE = ("resume", "checkpoint_every", "max_tilt", "post_failure_time")
@@ -89,22 +89,43 @@ def arrest_line(stage: dict, arrest_time: float) -> str:
             f"phi {phi} deg): tilting on")
 
 
+def sort_breaks_before_stages(before: dict, ramp_tilt: Callable[[float], float]) -> dict:
+    """Add to ``before`` (``breaks_before_stages``: the breaks of the level table, then of the
+    ramp, first in the bond law's record) how many of each phase freed a loose disc and the tilt
+    (``ramp_tilt`` of the simulated time) at which the ramp first cracked the rock
+    (``bonding.rock_breaks``)."""
+    rock = {"level": bonding.rock_breaks(0, before["level"]),
+            "ramp": bonding.rock_breaks(before["level"], before["ramp"])}
+    before["loose"] = {phase: before[phase] - len(breaks) for phase, breaks in rock.items()}
+    if rock["ramp"]:
+        before["first_ramp_crack_deg"] = ramp_tilt(scene.bond_law().breakTime[rock["ramp"][0]])
+    return before
+
+
+def cracks(breaks: dict, phase: str) -> int:
+    """The bonds of ``breaks`` (``breaks_before_stages``) that broke in ``phase`` (level, ramp)
+    inside the rock, besides those that freed a loose disc (``bonding.loose_breaks``)."""
+    return breaks[phase] - breaks.get("loose", {}).get(phase, 0)
+
+
 def ramp_warning(breaks: dict) -> str:
-    """The warning for bonds broken before the first stage (``breaks``: per phase, level and
-    ramp), empty if none: the first stage's slope is then already cracked and its failure tilt
-    may be lower than the intact slope's."""
-    if not any(breaks.values()):
+    """The warning for bonds of the rock broken before the first stage (``breaks``:
+    ``breaks_before_stages``), empty if none: the first stage's slope is then already cracked
+    and its failure tilt may be lower than the intact slope's. Breaks that freed a loose disc
+    are debris coming off, not cracks: they are counted, not warned of."""
+    level, ramp = cracks(breaks, "level"), cracks(breaks, "ramp")
+    if not (level or ramp):
         return ""
     advice = []
-    if breaks["level"]:  # no tilt yet: a lower start_tilt cannot spare these bonds
+    if level:  # no tilt yet: a lower start_tilt cannot spare these bonds
         advice.append("bonds that break on the level table carry overlaps locked into the packing or the slope's "
                       "own weight: shrink the overlaps before bonding (packing.shrink_overlaps) or raise the bond "
                       "strengths")
-    if breaks["ramp"]:
-        first = breaks.get("first_ramp_break_deg")  # not in checkpoints older than it
+    if ramp:
+        first = breaks.get("first_ramp_crack_deg")  # not in checkpoints older than it
         below = f"below {first:.1f} deg, where the ramp broke its first bond," if first is not None else "lower"
         advice.append(f"rerun with a start_tilt {below} to judge in stages the tilts the ramp passed")
-    return (f"WARNING: {breaks['level']} bonds broke on the level table and {breaks['ramp']} on the ramp to "
+    return (f"WARNING: {level} bonds of the rock broke on the level table and {ramp} on the ramp to "
             "start_tilt: the slope entered its first stage cracked and its failure tilt may be low; "
             + "; ".join(advice))
 
@@ -282,10 +303,7 @@ class TiltRun:
         scene.set_local_damping(p.damping)  # from here on the loading's, also in a resumed run
         if phase["name"] == "ramp":
             tilting.ramp(0.0, p.start_tilt, p.start_tilt / p.tilt_rate, self.on_chunk, start=phase["start"])
-            before = state.setdefault("breaks_before_stages", {"level": 0})  # older checkpoints: level's counted here
-            before["ramp"] = scene.broken_bonds() - before["level"]
-            if before["ramp"]:
-                before["first_ramp_break_deg"] = self.first_ramp_break(before["level"], phase["start"])
+            before = self.count_ramp_breaks(phase["start"])
             if warning := ramp_warning(before):  # said now: the user may stop the run rather than wait for its stages
                 print(warning, flush=True)
             phase = self.begin("stage", reference=tilting.centroids(self.watched).tolist())
@@ -303,11 +321,12 @@ class TiltRun:
             self.run_after_failure(phase)
         return state["failure_tilt"]
 
-    def first_ramp_break(self, level_breaks: int, start: float) -> float:
-        """The tilt [deg] at which the ramp that began at ``start`` broke its first bond: a rerun
-        from a start_tilt below it ramps the same way up to there and enters its stages intact."""
-        first = min(scene.bond_law().breakTime[level_breaks:])
-        return min(self.protocol.start_tilt, self.protocol.tilt_rate * (first - start))
+    def count_ramp_breaks(self, start: float) -> dict:
+        """Add to ``breaks_before_stages`` the bonds broken on the ramp that began at ``start``
+        and tell them from those that freed loose discs (``sort_breaks_before_stages``)."""
+        p, before = self.protocol, self.state.setdefault("breaks_before_stages", {"level": 0})  # older checkpoints
+        before["ramp"] = scene.broken_bonds() - before["level"]
+        return sort_breaks_before_stages(before, lambda t: min(p.start_tilt, p.tilt_rate * (t - start)))
 
     def run_after_failure(self, phase: dict) -> None:
         """Let the failure surface develop for post_failure_time after the failure (also when a

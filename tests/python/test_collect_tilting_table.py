@@ -145,9 +145,10 @@ def test_a_first_stage_failure_is_an_upper_bound_and_a_rerun_from_lower_replaces
 
 def test_a_rerun_from_lower_replaces_a_run_the_ramp_cracked_and_a_cracked_rerun_does_not():
     cracked, intact = {"level": 0, "ramp": 1}, {"level": 0, "ramp": 0}
+    debris = {"level": 0, "ramp": 2, "loose": {"level": 0, "ramp": 2}}  # bonds that held loose discs: not cracked
     runs = {"s1": summary(0.004, 36.0, [17.0]),
             "s2": {**summary(0.004, 28.0, [4.0], seed=2), "breaks_before_stages": cracked},
-            "s2_low": {**summary(0.004, 34.0, [12.0], seed=2, start_tilt=18.0), "breaks_before_stages": intact},
+            "s2_low": {**summary(0.004, 34.0, [12.0], seed=2, start_tilt=18.0), "breaks_before_stages": debris},
             "s3": {**summary(0.004, 30.0, [9.0], seed=3), "breaks_before_stages": intact},
             "s3_low": {**summary(0.004, 40.0, [15.0], seed=3, start_tilt=18.0), "breaks_before_stages": cracked}}
     assert collect.seed_spread(runs) == ["| ideal 130 kPa R 1–4 mm, safety 0.5 | 1, 2, 3 | 30.0–36.0 | 33.3 ± 3.1 | "
