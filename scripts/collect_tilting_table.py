@@ -19,6 +19,7 @@ it gives when added to the weaker one's mean over all its seeds).
 import fnmatch
 import glob
 import json
+import math
 import os
 import statistics
 import sys
@@ -181,11 +182,12 @@ def entered_cracked(s: dict) -> bool:
     return breaks.get("ramp", 0) > breaks.get("loose", {}).get("ramp", 0)
 
 
-def doubt(s: dict) -> tuple[bool, bool]:
+def doubt(s: dict) -> tuple[bool, bool, float]:
     """How far a run's failure tilt is in doubt, least first: a first-stage failure is only an
     upper bound, a slope cracked by the ramp may fail low. A rerun of the same packing from a
-    lower start_tilt clears both and replaces the run."""
-    return first_stage_failure(s), entered_cracked(s)
+    lower start_tilt clears both and replaces the run; of runs alike in these, the one whose
+    stages began lowest judged the most tilts in stages."""
+    return first_stage_failure(s), entered_cracked(s), s["inputs"].get("start_tilt", math.inf)
 
 
 def one_per_draw(group: list[dict], drawn_by: Sequence[str] = SEED) -> list[dict]:

@@ -150,9 +150,11 @@ def test_a_rerun_from_lower_replaces_a_run_the_ramp_cracked_and_a_cracked_rerun_
             "s2": {**summary(0.004, 28.0, [4.0], seed=2), "breaks_before_stages": cracked},
             "s2_low": {**summary(0.004, 34.0, [12.0], seed=2, start_tilt=18.0), "breaks_before_stages": debris},
             "s3": {**summary(0.004, 30.0, [9.0], seed=3), "breaks_before_stages": intact},
-            "s3_low": {**summary(0.004, 40.0, [15.0], seed=3, start_tilt=18.0), "breaks_before_stages": cracked}}
-    assert collect.seed_spread(runs) == ["| ideal 130 kPa R 1–4 mm, safety 0.5 | 1, 2, 3 | 30.0–36.0 | 33.3 ± 3.1 | "
-                                         "2 of 3 | -1.7 ± 1.8: undecided | 9.0–17.0 |"]
+            "s3_low": {**summary(0.004, 40.0, [15.0], seed=3, start_tilt=18.0), "breaks_before_stages": cracked},
+            "s4": {**summary(0.004, 40.0, [20.0], seed=4, start_tilt=26.0), "breaks_before_stages": intact},  # alike
+            "s4_low": {**summary(0.004, 38.0, [10.0], seed=4, start_tilt=18.0), "breaks_before_stages": intact}}
+    assert collect.seed_spread(runs) == ["| ideal 130 kPa R 1–4 mm, safety 0.5 | 1, 2, 3, 4 | 30.0–38.0 | 34.5 ± 3.4 | "
+                                         "3 of 4 | -0.5 ± 1.7: undecided | 9.0–17.0 |"]
 
 
 def seeds(rmax: float, tilts: list, phis: list, **kw) -> dict[str, dict]:
