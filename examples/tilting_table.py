@@ -76,8 +76,10 @@ Loading: the discs within Rmax of the table are fixed in x and y (§5.2.4.2); gr
 by the tilt (Fig 5-7). The model first comes to rest on the level table, then the tilt rises
 steadily at `tilt_rate` deg/s to `start_tilt` (a tilt switched on at once loads the columns
 dynamically, up to twice their static stress; `start_tilt` 0 skips it), then by `step` degrees
-per stage, each step at once or, with `stage_rate` > 0, at that many deg/s. Each stage runs in
-chunks of `chunk` seconds until
+per stage, each step at once or, with `stage_rate` > 0, at that many deg/s. If the ramp cracks
+the rock (not counting bonds that held a loose disc), a warning names the tilt of its first crack:
+a rerun with `start_tilt` below it judges those tilts in stages. Each stage runs in chunks of
+`chunk` seconds until
 
 * equilibrium: the fastest column top (the centroid of the bonded discs within 2 Rmax of the
   top: a loose disc rattling is not a column moving) moves slower than `rest_speed`, or
