@@ -104,7 +104,7 @@ def sort_breaks_before_stages(before: dict, ramp_tilt: Callable[[float], float])
 
 def cracks(breaks: dict, phase: str) -> int:
     """The bonds of ``breaks`` (``breaks_before_stages``) that broke in ``phase`` (level, ramp)
-    inside the rock, besides those that freed a loose disc (``bonding.loose_breaks``)."""
+    inside the rock, besides those that freed a loose disc (``bonding.rock_breaks``)."""
     return breaks[phase] - breaks.get("loose", {}).get(phase, 0)
 
 
@@ -123,7 +123,7 @@ def ramp_warning(breaks: dict) -> str:
                       "strengths")
     if ramp:
         first = breaks.get("first_ramp_crack_deg")  # not in checkpoints older than it
-        below = f"below {first:.1f} deg, where the ramp broke its first bond," if first is not None else "lower"
+        below = f"below {first:.1f} deg, where the ramp first cracked the rock," if first is not None else "lower"
         advice.append(f"rerun with a start_tilt {below} to judge in stages the tilts the ramp passed")
     return (f"WARNING: {level} bonds of the rock broke on the level table and {ramp} on the ramp to "
             "start_tilt: the slope entered its first stage cracked and its failure tilt may be low; "
