@@ -94,8 +94,8 @@ def sort_breaks_before_stages(before: dict, ramp_tilt: Callable[[float], float])
     ramp, first in the bond law's record) how many of each phase freed a loose disc and the tilt
     (``ramp_tilt`` of the simulated time) at which the ramp first cracked the rock
     (``bonding.rock_breaks``)."""
-    rock = {"level": bonding.rock_breaks(0, before["level"]),
-            "ramp": bonding.rock_breaks(before["level"], before["ramp"])}
+    cracked = bonding.rock_breaks(0, before["level"] + before["ramp"])  # one pass over the record
+    rock = {"level": [k for k in cracked if k < before["level"]], "ramp": [k for k in cracked if k >= before["level"]]}
     before["loose"] = {phase: before[phase] - len(breaks) for phase, breaks in rock.items()}
     if rock["ramp"]:
         before["first_ramp_crack_deg"] = ramp_tilt(scene.bond_law().breakTime[rock["ramp"][0]])
