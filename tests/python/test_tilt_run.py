@@ -142,6 +142,19 @@ def test_a_ramp_stopped_short_of_the_reported_first_crack_breaks_no_bond(empty_s
     assert above["ramp"] > 0 and above["first_ramp_crack_deg"] == pytest.approx(first, abs=0.06)
 
 
+def test_stages_crack_the_rock_first_in_the_stage_past_the_ramps_first_crack(empty_scene, tmp_path):
+    # scripts/stage_breaks.py counts the cracks by each stage's end: the cantilever staged in 2 deg steps holds
+    # uncracked up to the ramp's first-crack tilt and cracks (and fails) in the stage after it
+    first = ramp_breaks(tmp_path, 30.0)["first_ramp_crack_deg"]
+    O.reset()
+    run = cantilever_run(tmp_path / "stages", protocol(start_tilt=18.0, max_tilt=30.0), 8e3)
+    run.run()
+    rows = load_script("stage_breaks").by_stage(run.state["stages"])
+    assert [row[:2] for row in rows] == tilts(run)
+    assert [tilt for tilt, _, _, cracks in rows if cracks == 0] == [t for t in (18.0, 20.0, 22.0, 24.0) if t < first]
+    assert rows[-1][1] == "failed" and rows[-1][0] - first < 2.0 and rows[-1][2] >= rows[-1][3] > 0
+
+
 def test_bonds_broken_on_the_level_table_are_blamed_on_the_packing_not_the_ramp(empty_scene, tmp_path, capsys):
     # the same column bonded over its packing's overlaps: their locked-in force breaks a few 40 kPa bonds (80 kPa
     # none) before any tilt, and the ramp to 10 deg (6 kPa of bending) none
