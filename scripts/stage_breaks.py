@@ -5,8 +5,8 @@ or stages from 18 deg) compared tilt by tilt.
     ./yade -x -n scripts/stage_breaks.py results/tilting_table/<run> [...]
 
 Reads each run's checkpoint (the scene keeps every break's time and discs, checkpoint.json each
-stage's end time). A crack is a break of two discs each held by at least two bonds until then
-(toppling.bonding.rock_breaks); the others freed a loose disc.
+stage's end time). A crack is a break of two discs each still held by at least two bonds at the
+end of its stage (toppling.bonding.rock_breaks); the others freed a disc.
 """
 import os
 import sys
@@ -19,12 +19,16 @@ from toppling import bonding, monitor, scene
 
 def by_stage(stages: list[dict]) -> list[tuple[float, str, int, int]]:
     """For each of ``stages`` of the scene loaded: its tilt, its outcome, and the breaks and
-    cracks recorded by its end."""
-    times = np.array(scene.bond_law().breakTime)
-    cracked = np.zeros(len(times), bool)
-    cracked[bonding.rock_breaks(0, len(times))] = True
-    return [(stage["tilt"], stage["outcome"], int(np.sum(times <= stage["time"])),
-             int(np.sum(cracked & (times <= stage["time"])))) for stage in stages]
+    cracks recorded by its end (the breaks before the first stage count with it; each stage's
+    are sorted at its end)."""
+    times = scene.bond_law().breakTime
+    rows, first, cracks = [], 0, 0
+    for stage in stages:
+        end = int(np.searchsorted(times, stage["time"], side="right"))
+        cracks += len(bonding.rock_breaks(first, end - first))
+        rows.append((stage["tilt"], stage["outcome"], end, cracks))
+        first = end
+    return rows
 
 
 def main(folders: list[str]) -> None:

@@ -97,10 +97,21 @@ def bonds_before_breaks() -> list[tuple[int, int]]:
 
 
 def rock_breaks(first: int, count: int) -> list[int]:
-    """The indices of the ``count`` recorded breaks from the ``first`` on that cracked the rock
-    (``rock``: both discs held by at least two bonds until then). The others freed a loose disc,
-    held by that bond alone (a disc left without bonds, or a pair bonded only to each other): a
-    joint can leave a sliver of discs bonded across the pore between joint planes by a bond or
-    two, and those breaks let debris come off, they do not crack the rock."""
-    before = bonds_before_breaks()
-    return [k for k in range(first, first + count) if min(before[k]) >= 2]
+    """The indices of the ``count`` recorded breaks from the ``first`` on that cracked the rock:
+    both discs still rock (``rock``: held by at least two intact bonds) once the last of them is
+    over. The others freed a disc, or left it hanging by one bond: a joint can leave a disc or a
+    pair bonded across the pore between joint planes by two bonds or fewer, and when a tilt shakes
+    it off both bonds go within a millisecond (the first break, of discs each held by two bonds,
+    looks like a crack until the second). That is debris coming off, not a crack in the rock."""
+    law = bond_law()
+    pairs = list(zip(law.breakId1, law.breakId2))
+    end = first + count
+    later = defaultdict(int)  # bonds each disc lost after the window, intact at its end
+    for pair in pairs[end:]:
+        for i in pair:
+            later[i] += 1
+
+    def left(i: int) -> int:
+        return (intact_bonds(i) if O.bodies[i] is not None else 0) + later[i]
+
+    return [k for k in range(first, end) if min(map(left, pairs[k])) >= 2]

@@ -94,9 +94,10 @@ def sort_breaks_before_stages(before: dict, ramp_tilt: Callable[[float], float])
     ramp, first in the bond law's record) how many of each phase freed a loose disc and the tilt
     (``ramp_tilt`` of the simulated time) at which the ramp first cracked the rock
     (``bonding.rock_breaks``)."""
-    cracked = bonding.rock_breaks(0, before["level"] + before["ramp"])  # one pass over the record
-    rock = {"level": [k for k in cracked if k < before["level"]], "ramp": [k for k in cracked if k >= before["level"]]}
+    rock = {"level": bonding.rock_breaks(0, before["level"]),  # each judged at its phase's end
+            "ramp": bonding.rock_breaks(before["level"], before["ramp"])}
     before["loose"] = {phase: before[phase] - len(breaks) for phase, breaks in rock.items()}
+    before.pop("first_ramp_crack_deg", None)  # sorted again by a newer rule, a run may have none
     if rock["ramp"]:
         before["first_ramp_crack_deg"] = ramp_tilt(scene.bond_law().breakTime[rock["ramp"][0]])
     return before

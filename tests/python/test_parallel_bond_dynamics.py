@@ -6,7 +6,7 @@ import pytest
 from lattice import R, bonded_lattice, leapfrog_energy, material
 from yade import O
 
-from toppling import bonding, boundary, packing, scene
+from toppling import bonding, boundary, packing, scene, tilt_run
 
 
 def shake(ids, speed=0.01, seed=1):
@@ -144,27 +144,36 @@ def test_rock_is_the_discs_held_by_two_bonds_not_a_loose_pair(empty_scene):
 
 
 def test_breaks_that_free_a_loose_disc_are_told_from_cracks_in_the_rock(empty_scene):
-    """A chain of four discs, the middle two fixed, with a knob disc bonded on top of them, and a
-    bonded pair: pulled off, the chain's ends, the pair and the knob's second bond free a loose
-    disc (held by that bond alone); the knob's first bond, one of two, is a crack in the rock."""
+    """A chain of four discs, the middle two fixed, with a knob disc bonded on top of them, a
+    bonded pair, and two bonded triangles tied by one bond, the first fixed. Pulled off, the
+    chain's ends, the pair and the knob (both its bonds) free a disc: debris, also the knob's first
+    break, of discs each held by two bonds. Pulling the second triangle off cracks the rock: its
+    discs and the first's each keep two bonds."""
     mat = material(bondTensileStrength=1e3, bondCohesion=1e3)
     chain = [(2 * R * k, 0.0, R) for k in range(4)]
-    ids = scene.add_discs(chain + [(3 * R, math.sqrt(3) * R, R), (0.0, 10 * R, R), (2 * R, 10 * R, R)], mat)
-    end0, fixed1, fixed2, end3, knob, pair_a, pair_b = ids
-    for i in (fixed1, fixed2):
+    h = math.sqrt(3) * R
+    triangles = [(0.0, 20 * R, R), (-2 * R, 20 * R, R), (-R, 20 * R - h, R),
+                 (2 * R, 20 * R, R), (4 * R, 20 * R, R), (3 * R, 20 * R + h, R)]
+    ids = scene.add_discs(chain + [(3 * R, h, R), (0.0, 10 * R, R), (2 * R, 10 * R, R)] + triangles, mat)
+    end0, fixed1, fixed2, end3, knob, pair_a, pair_b = ids[:7]
+    for i in (fixed1, fixed2, *ids[7:10]):
         O.bodies[i].state.blockedDOFs = "xyzXYZ"
     O.engines = scene.engines(gravity=(0, 0, 0))
     O.step()
-    assert bonding.bond_within_gap(1e-6 * R, ids) == 3 + 2 + 1
+    assert bonding.bond_within_gap(1e-6 * R, ids) == 3 + 2 + 1 + 3 + 3 + 1
     for disc, direction in ((end0, (-1, 0)), (end3, (1, 0)), (knob, (0, 1)), (pair_a, (-1, 0)), (pair_b, (1, 0))):
         boundary.move([disc], (0.01 * direction[0], 0.01 * direction[1], 0))
+    boundary.move(ids[10:], (0.01, 0, 0))
     law = scene.bond_law()
-    while len(law.breakMode) < 5 and O.iter < 100000:  # all but the fixed discs' bond
+    while len(law.breakMode) < 6 and O.iter < 100000:  # all but the fixed discs' bonds and the triangles' own
         scene.run_steps(100)
-    assert len(law.breakMode) == 5
-    assert sorted(min(pair) for pair in bonding.bonds_before_breaks()) == [1, 1, 1, 1, 2]
-    knob_breaks = [n for n, pair in enumerate(zip(law.breakId1, law.breakId2)) if knob in pair]
-    assert bonding.rock_breaks(0, 5) == knob_breaks[:1]
+    assert len(law.breakMode) == 6
+    assert sorted(min(pair) for pair in bonding.bonds_before_breaks()) == [1, 1, 1, 1, 2, 3]
+    tie = [n for n, pair in enumerate(zip(law.breakId1, law.breakId2)) if set(pair) == {ids[7], ids[10]}]
+    assert bonding.rock_breaks(0, 6) == tie
+    # a run sorted again by this rule keeps no first ramp crack it had by an older one
+    again = tilt_run.sort_breaks_before_stages({"level": 6, "ramp": 0, "first_ramp_crack_deg": 9.0}, lambda t: 0.0)
+    assert again == {"level": 6, "ramp": 0, "loose": {"level": 5, "ramp": 0}}
 
 
 @pytest.mark.parametrize("shrink", [False, True])

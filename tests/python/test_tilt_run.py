@@ -156,9 +156,10 @@ def test_stages_crack_the_rock_first_in_the_stage_past_the_ramps_first_crack(emp
 
 
 def test_bonds_broken_on_the_level_table_are_blamed_on_the_packing_not_the_ramp(empty_scene, tmp_path, capsys):
-    # the same column bonded over its packing's overlaps: their locked-in force breaks a few 40 kPa bonds (80 kPa
-    # none) before any tilt, and the ramp to 10 deg (6 kPa of bending) none
-    run = cantilever_run(tmp_path, protocol(start_tilt=10.0, max_tilt=10.0), tensile_strength=40e3, shrink=False)
+    # the same column bonded over its packing's overlaps: their locked-in force breaks a few 30 kPa bonds (80 kPa
+    # none) before any tilt, most of them freeing a disc but one cracking the rock, and the ramp to 10 deg (6 kPa
+    # of bending) none
+    run = cantilever_run(tmp_path, protocol(start_tilt=10.0, max_tilt=10.0), tensile_strength=30e3, shrink=False)
     run.run()
     before = run.state["breaks_before_stages"]
     assert before["level"] > 0 and before["ramp"] == 0
