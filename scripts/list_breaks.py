@@ -4,9 +4,9 @@
 
 Prints one row per break: simulated time, bond centre, mode, the two discs and the intact
 bonds each still has (with ``--before`` first the intact bonds each had just before the break;
-toppling.bonding.rock_breaks tells cracks from breaks that freed a disc). A break in the first steps, before gravity has moved anything, is a
-bond that the packing's overlap pushed apart; a disc left with fewer than two bonds is not
-rock any more (toppling.bonding.rock).
+toppling.bonding.rock_breaks tells cracks from breaks that freed a disc). A break in the first
+steps, before gravity has moved anything, is a bond that the packing's overlap pushed apart; a
+disc left with fewer than two bonds is not rock any more (toppling.bonding.rock).
 """
 import sys
 
