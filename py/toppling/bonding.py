@@ -79,10 +79,14 @@ def rock(ids: Sequence[int], min_bonds: int = 2) -> list[int]:
     return [i for i in ids if intact_bonds(i) >= min_bonds]
 
 
+def _intact_now(body_id: int) -> int:
+    """A disc's intact bonds now; a deleted disc has none."""
+    return intact_bonds(body_id) if O.bodies[body_id] is not None else 0
+
+
 def bonds_before_breaks() -> list[tuple[int, int]]:
     """For each break the parallel-bond law has recorded, in order, the intact bonds its two
-    discs had just before it: each disc's intact bonds now plus its breaks from that one on
-    (a deleted disc has none now)."""
+    discs had just before it: each disc's intact bonds now plus its breaks from that one on."""
     law = bond_law()
     now = {}
     later = defaultdict(int)
@@ -90,7 +94,7 @@ def bonds_before_breaks() -> list[tuple[int, int]]:
     for pair in reversed(list(zip(law.breakId1, law.breakId2))):
         for i in pair:
             if i not in now:
-                now[i] = intact_bonds(i) if O.bodies[i] is not None else 0
+                now[i] = _intact_now(i)
             later[i] += 1
         before.append(tuple(now[i] + later[i] for i in pair))
     return before[::-1]
@@ -110,8 +114,4 @@ def rock_breaks(first: int, count: int) -> list[int]:
     for pair in pairs[end:]:
         for i in pair:
             later[i] += 1
-
-    def left(i: int) -> int:
-        return (intact_bonds(i) if O.bodies[i] is not None else 0) + later[i]
-
-    return [k for k in range(first, end) if min(map(left, pairs[k])) >= 2]
+    return [k for k in range(first, end) if min(_intact_now(i) + later[i] for i in pairs[k]) >= 2]
