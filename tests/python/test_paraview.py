@@ -2,6 +2,7 @@
 import json
 import math
 import os
+import re
 import xml.etree.ElementTree as ET
 
 import numpy as np
@@ -149,6 +150,35 @@ def test_first_crack_reads_the_peaks_and_interpolates_the_tilt(empty_scene, tmp_
     assert first_crack.crossing_tilt(peaks, 2 * sigma[1]) is None
     two = [(26.0, [3.0, 1.0]), (28.0, [4.0, 2.0]), (30.0, [5.0, 4.0])]  # the second bond from 1 to 4 Pa
     assert first_crack.crossing_tilt(two, 3.0, rank=2) == pytest.approx(29.0)
+
+
+def test_path_stress_compares_two_runs_at_the_last_stage_both_ended_elastic(empty_scene, tmp_path, capsys):
+    """scripts/path_stress.py: two runs' largest stresses at their last common stage, the rise
+    into it, and the mean difference over the pairs, in kPa and in degrees of tilt. Run B is the
+    bond pulled further than run A, read back from two ParaView series."""
+    path_stress = load_script("path_stress")
+    a = [(18.0, [70e3]), (20.0, [74e3]), (22.0, [80e3])]
+    b = [(20.0, [76e3]), (22.0, [81e3]), (24.0, [90e3])]
+    assert path_stress.compare(a, b) == pytest.approx((22.0, 80e3, 81e3, 2.75e3))  # rises 3 and 2.5 kPa/deg
+    assert path_stress.compare(a[:1], b) is None and path_stress.compare(a[:1], a[:1]) == (18.0, 70e3, 70e3, None)
+    pulled_bond()
+    sigma = {}
+    for run in ("a", "b"):
+        series = paraview.ParaViewSeries(str(tmp_path / run / "paraview"))
+        stages = []
+        for tilt in (26.0, 28.0):
+            scene.run_steps(5)
+            series.snapshot()
+            stages.append({"time": O.time, "tilt": tilt})
+            sigma[run, tilt] = O.interactions[0, 1].phys.bondSigmaMax / 1e3
+        (tmp_path / run / "summary.json").write_text(json.dumps({"stages": stages, "failure_tilt_deg": 30.0}))
+    path_stress.main([str(tmp_path / run) for run in ("a", "b", "a", "b")])
+    lines = capsys.readouterr().out.splitlines()
+    difference = sigma["b", 28.0] - sigma["a", 28.0]
+    assert difference > 0 and [c.strip() for c in lines[2].split("|")[3:5]] == ["28", f"{sigma['a', 28.0]:.1f}"]
+    mean = re.search(r"over 2 pairs: ([-+.\d]+) ± ([.\d]+) kPa.*: ([-+.\d]+) ± ([.\d]+)°", lines[-1]).groups()
+    rise = (sigma["a", 28.0] - sigma["a", 26.0] + sigma["b", 28.0] - sigma["b", 26.0]) / 4  # per degree, both runs
+    assert [float(v) for v in mean] == pytest.approx([difference, 0.0, difference / rise, 0.0], abs=0.01)
 
 
 def test_crack_heights_tells_roots_from_bonds_above_the_table(empty_scene, tmp_path, capsys):
