@@ -92,6 +92,22 @@ def draw(s: dict, drawn_by: Sequence[str]) -> tuple:
     return tuple(inputs[name] for name in drawn_by)
 
 
+def overall_phi(s: dict) -> Optional[float]:
+    """phi of the one line through all of run ``s``'s failure points (toppling.analysis's
+    overall surface), which compares runs whose points split into different numbers of
+    surfaces: the summary's ``phi_overall_deg``; a one-surface run's phi; for a two-surface
+    summary older than that key, the same least-squares line through its ``failure_points``."""
+    if s.get("phi_overall_deg") is not None:
+        return s["phi_overall_deg"]
+    if len(s["phi_deg"]) == 1:
+        return s["phi_deg"][0]
+    points = s.get("failure_points") or []
+    if len(points) < 2:
+        return None
+    fit = statistics.linear_regression([x for x, _ in points], [y for _, y in points])
+    return math.degrees(math.atan(-fit.slope))  # the slope frame's phi (toppling.analysis.Plane)
+
+
 def phi_change(s: dict, ref: dict) -> tuple[Optional[list[float]], str]:
     """phi of run ``s`` minus that of ``ref``, surface by surface (None if they have different
     numbers of surfaces), and its text for a table."""
@@ -264,8 +280,8 @@ def seed_spread(runs: dict[str, dict], drawn_by: Sequence[str] = SEED) -> list[s
     """Lines giving, for each model, packing size and time step run with several draws (packing
     seeds; with DRAW, packing and layout seeds where several layouts were run), the range, mean
     and standard deviation of the failure tilt, how many draws failed within the issue's
-    tolerance of the thesis' tilt, whether their mean is (``mean_against``), and the range of
-    phi (first surface). A draw that stood to its
+    tolerance of the thesis' tilt, whether their mean is (``mean_against``), and the mean,
+    standard deviation and range of the overall phi (``overall_phi``). A draw that stood to its
     last stage, or failed in its first (an upper bound), counts as one outside the tolerance and
     in none of the figures."""
     lines = []
@@ -274,11 +290,11 @@ def seed_spread(runs: dict[str, dict], drawn_by: Sequence[str] = SEED) -> list[s
         if len(failed) < 2 or len({draw(s, drawn_by)[-1] for s in group}) < 2:
             continue  # the last input drawn does not vary: one run, or another table's group
         tilts = [s["failure_tilt_deg"] for s in failed]
-        phis = [s["phi_deg"][0] for s in failed if s["phi_deg"]]
+        phis = [phi for phi in map(overall_phi, failed) if phi is not None]
         seeds = ", ".join("/".join(f"{v:g}" for v in draw(s, drawn_by)) for s in group)
         target = group[0]["thesis"]["failure_tilt_deg"]
         inside = sum(abs(t - target) <= TARGET_TOLERANCE_DEG for t in tilts)
-        phi_range = f"{min(phis):.1f}–{max(phis):.1f}" if phis else "-"
+        phi_range = f"{stats_text(phis)} ({min(phis):.1f}–{max(phis):.1f})" if phis else "-"
         stood = sum(s["failure_tilt_deg"] is None for s in group)
         bounded = [f"{s['failure_tilt_deg']:g}" for s in group if first_stage_failure(s)]
         others = ([f"{stood} stood"] if stood else []) + ([f"at most {', '.join(bounded)}"] if bounded else [])
@@ -325,8 +341,10 @@ def stats_text(values: list[float]) -> str:
 def size_over_seeds(runs: dict[str, dict]) -> list[str]:
     """The size check on seed means: each packing run with several seeds, or against one that
     was, compared with the next coarser packing of the same model, bond gap and numerical
-    settings: mean failure tilt and phi (first surface) of the seeds that failed, the difference
-    of the means with its standard error, and the verdict of mean_difference."""
+    settings: mean failure tilt and overall phi (``overall_phi``) of the seeds that failed, the
+    difference of the means with its standard error, and the verdict of mean_difference; beside
+    it the difference of the first surface's phi, which a toe segment along the table pulls
+    down in the runs whose points split."""
     groups = seed_groups(runs)
     lines = []
     for key, group in groups.items():
@@ -353,7 +371,8 @@ def size_over_seeds_row(key: SeedGroup, group: list[dict], coarse_key: SeedGroup
         return []  # one seed each: size_check's pair
     sides = [failed_seeds(g) for g in (group, partner)]
     tilts = [[s["failure_tilt_deg"] for s in side] for side in sides]
-    phis = [[s["phi_deg"][0] for s in side if s["phi_deg"]] for side in sides]
+    phis = [[phi for phi in map(overall_phi, side) if phi is not None] for side in sides]
+    firsts = [[s["phi_deg"][0] for s in side if s["phi_deg"]] for side in sides]
     cells = []
     for g, side, t, p in zip((group, partner), sides, tilts, phis):
         stood = len(g) - len(side)
@@ -365,7 +384,9 @@ def size_over_seeds_row(key: SeedGroup, group: list[dict], coarse_key: SeedGroup
                else phi_ok if tilt_ok == "yes" else tilt_ok)  # an undecided phi leaves it undecided
     coarse = coarse_key.size_text()
     coarse += f", bond gap {1e3 * coarse_key.gap:g} mm" if coarse_key.gap != key.gap else ""
-    return [f"| {group_name(key)} vs {coarse} | {cells[0]} | {cells[1]} | {tilt_text} | {phi_text} | {verdict} |"]
+    first_text = mean_difference(*firsts)[0]
+    return [f"| {group_name(key)} vs {coarse} | {cells[0]} | {cells[1]} | {tilt_text} | {phi_text} | {first_text} | "
+            f"{verdict} |"]
 
 
 def without_strength(key: SeedGroup) -> SeedGroup:
@@ -466,15 +487,16 @@ def main(folder: str, patterns: Sequence[str] = ("*",)) -> None:
             ["runs", "bond gap (mm)", "failure tilt (°)", "φ (°)", "within tolerance"], size_check(runs))
     section("Packing seed (range over the seeds of the same model, packing size and time step)",
             ["model", "seeds", "failure tilt (°)", "mean ± sd (°)", f"within {TARGET_TOLERANCE_DEG:g}° of the thesis",
-             MEAN_AGAINST_HEADER, "φ (°)"], seed_spread(runs))
+             MEAN_AGAINST_HEADER, "overall φ (°)"], seed_spread(runs))
     section("Packing and layout (range over the random arrangement's draws, packing seed / layout seed, of the same "
             "model, packing size and time step)",
             ["model", "packing / layout seeds", "failure tilt (°)", "mean ± sd (°)",
-             f"within {TARGET_TOLERANCE_DEG:g}° of the thesis", MEAN_AGAINST_HEADER, "φ (°)"], seed_spread(runs, DRAW))
+             f"within {TARGET_TOLERANCE_DEG:g}° of the thesis", MEAN_AGAINST_HEADER, "overall φ (°)"],
+            seed_spread(runs, DRAW))
     section(f"Particle size over seeds (finer minus next coarser, means of the seeds that failed ± the standard "
             f"error; within {SIZE_TOLERANCE_DEG:g} deg by two standard errors?)",
-            ["model vs coarser", "finer: seeds failed, failure tilt (°), φ (°)", "coarser: the same",
-             "failure tilt (°)", "φ (°)", "within tolerance"], size_over_seeds(runs))
+            ["model vs coarser", "finer: seeds failed, failure tilt (°), overall φ (°)", "coarser: the same",
+             "failure tilt (°)", "overall φ (°)", "first surface's φ (°)", "within tolerance"], size_over_seeds(runs))
     section("Bond strength on the same packings (a stronger group minus the weaker, packing by packing; the "
             "stronger's mean estimated as the weaker's mean over all its seeds plus that shift ± the standard error)",
             ["weaker model", "stronger", "paired seeds", "shift (°)", "weaker: seeds failed, failure tilt (°)",

@@ -19,6 +19,8 @@ reading of it):
   ``split_gain`` and the two angles differ by >= ``min_angle_difference``; phi is the angle
   of a line to the normal of the main joints, positive rising into the slope; how strongly
   the points call for two planes is the F-test's p-value of the best split (``split_p_value``);
+  the overall surface is the one line through all the points, also where two are fitted
+  (``overall_surface``), whose phi compares runs that split differently;
 * zones per column, from its top point: ``no-movement`` (total displacement below
   ``still``), ``stable`` (moved, but came to rest), ``toppling`` (still moving, the top moving
   more than twice as much as the base), ``sliding`` (still moving, base moving with the top);
@@ -141,6 +143,15 @@ def fit_failure_surface(points: Sequence[tuple[float, float]], split_gain: float
     return [one]
 
 
+def overall_surface(points: Sequence[tuple[float, float]]) -> Plane:
+    """The one line through all the failure points, also where ``fit_failure_surface`` finds
+    two: its angle compares runs whose points split differently (a toe segment along the table
+    and a steep upper one average out to the surface the slope fails along)."""
+    if len(points) < 2:
+        raise ValueError(f"{len(points)} failure points: a failure surface needs at least 2")
+    return _one_and_split(points)[0]
+
+
 def split_p_value(points: Sequence[tuple[float, float]]) -> Optional[float]:
     """How strongly the failure points call for two planes: the p-value of the F-test of the
     best two-line split (two more parameters) against one line, (SSE2 / SSE1)^((n - 4) / 2)
@@ -222,7 +233,8 @@ def table_failure(layout, reference: np.ndarray, now: np.ndarray, tops: dict[str
         fell_off=[label in top_of and now[top_of[label], 1] < floor for label in labels], least_motion=least_motion)
     planes = fit_failure_surface(points) if len(points) >= 2 else []
     height = layout.tilted_height(tilt_deg)
-    return {"planes": planes, "split_p": split_p_value(points), "failure_points": points, "zones": zones,
+    return {"planes": planes, "overall": overall_surface(points) if planes else None, "split_p": split_p_value(points),
+            "failure_points": points, "zones": zones,
             "height": height, **zone_distances(zones, layout.far_edges(tilt_deg), height)}
 
 

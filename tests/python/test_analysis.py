@@ -71,6 +71,19 @@ def test_noisy_straight_surface_stays_one_plane():
     assert planes[0].phi_deg == pytest.approx(20, abs=2)
 
 
+def test_the_overall_surface_is_one_line_through_a_dog_leg_that_splits_into_two():
+    """A toe segment along the table (four points at y = 0) and a 45 degree one above it: the
+    fit splits them, the overall surface is their least-squares line, slope 25/42 by hand
+    (k = 0..7 columns in from the toe, y_k = max(0, k - 3) widths)."""
+    points = [(-k * WIDTH, max(0, k - 3) * WIDTH) for k in range(8)]
+    assert [p.phi_deg for p in analysis.fit_failure_surface(points)] == pytest.approx([0.0, 45.0], abs=1e-9)
+    assert analysis.overall_surface(points).phi_deg == pytest.approx(math.degrees(math.atan(25 / 42)), abs=1e-9)
+    straight = noisy_straight_points()
+    assert analysis.overall_surface(straight) == analysis.fit_failure_surface(straight)[0]  # one plane: the same line
+    with pytest.raises(ValueError, match="1 failure points: a failure surface needs at least 2"):
+        analysis.overall_surface(points[:1])
+
+
 def test_cracks_refine_the_failure_point():
     pos, disp, column = columns_cut_by(lambda x: 0.1, n_columns=1)
     cracks = np.array([(-0.025, 0.105), (-0.02, 0.103), (-0.03, 0.107), (0.5, 0.3)])  # last: other column

@@ -1,6 +1,8 @@
 """scripts/collect_tilting_table.py on made-up summaries: the particle-size check, the seed spread, the table."""
 import json
+import math
 
+import pytest
 from conftest import load_script
 
 collect = load_script("collect_tilting_table")
@@ -75,7 +77,7 @@ def test_seeds_give_the_spread_of_one_model_and_a_finer_packing_meets_its_own_se
     runs = {"s1": summary(0.008, 32.0, [8.1]), "s2": summary(0.008, 34.0, [18.5], seed=2),
             "s3": summary(0.008, 32.0, [12.0], seed=3), "fine_s2": summary(0.004, 33.0, [17.0], seed=2),
             "alone": summary(0.004, 30.0, [10.0], strength=100e3)}
-    assert collect.seed_spread(runs) == ["| ideal 130 kPa R 2–8 mm, safety 0.5 | 1, 2, 3 | 32.0–34.0 | 32.7 ± 1.2 | 3 of 3 | -2.3 ± 0.7: undecided | 8.1–18.5 |"]
+    assert collect.seed_spread(runs) == ["| ideal 130 kPa R 2–8 mm, safety 0.5 | 1, 2, 3 | 32.0–34.0 | 32.7 ± 1.2 | 3 of 3 | -2.3 ± 0.7: undecided | 12.9 ± 5.3 (8.1–18.5) |"]
     assert collect.size_check(runs) == ["| fine_s2 vs s2 | 1.05 vs 1.05 | -1.0 | -1.5 | yes |"]
 
 
@@ -88,7 +90,7 @@ def test_a_seed_that_stands_counts_outside_the_target_and_outside_the_figures():
     runs = {"s1": summary(0.004, 36.0, [17.0]), "s2": summary(0.004, 30.0, [14.4], seed=2),
             "s3": {**summary(0.004, None, [], seed=3), "stable_up_to_deg": 44.0}}
     assert collect.seed_spread(runs) == ["| ideal 130 kPa R 1–4 mm, safety 0.5 | 1, 2, 3 | 30.0–36.0 | 33.0 ± 4.2 | "
-                                         "1 of 3 (1 stood) | -2.0 ± 3.0: undecided (2 draws) | 14.4–17.0 |"]
+                                         "1 of 3 (1 stood) | -2.0 ± 3.0: undecided (2 draws) | 15.7 ± 1.8 (14.4–17.0) |"]
 
 
 def test_a_failure_by_the_stage_time_limit_is_marked_in_the_table(tmp_path, capsys):
@@ -140,7 +142,7 @@ def test_a_first_stage_failure_is_an_upper_bound_and_a_rerun_from_lower_replaces
             "s3_low": {**summary(0.004, 28.0, [2.8], seed=3, start_tilt=16.0), "failed_in_first_stage": False},
             "s4": {**summary(0.004, 26.0, [11.4], seed=4), "failed_in_first_stage": True}}
     assert collect.seed_spread(runs) == ["| ideal 130 kPa R 1–4 mm, safety 0.5 | 1, 2, 3, 4 | 28.0–42.0 | 35.3 ± 7.0 | "
-                                         "1 of 4 (at most 26) | +0.3 ± 4.1: undecided | 2.8–17.0 |"]
+                                         "1 of 4 (at most 26) | +0.3 ± 4.1: undecided | 11.5 ± 7.6 (2.8–17.0) |"]
 
 
 def test_a_rerun_from_lower_replaces_a_run_the_ramp_cracked_and_a_cracked_rerun_does_not():
@@ -154,7 +156,7 @@ def test_a_rerun_from_lower_replaces_a_run_the_ramp_cracked_and_a_cracked_rerun_
             "s4": {**summary(0.004, 40.0, [20.0], seed=4, start_tilt=26.0), "breaks_before_stages": intact},  # alike
             "s4_low": {**summary(0.004, 38.0, [10.0], seed=4, start_tilt=18.0), "breaks_before_stages": intact}}
     assert collect.seed_spread(runs) == ["| ideal 130 kPa R 1–4 mm, safety 0.5 | 1, 2, 3, 4 | 30.0–38.0 | 34.5 ± 3.4 | "
-                                         "3 of 4 | -0.5 ± 1.7: undecided | 9.0–17.0 |"]
+                                         "3 of 4 | -0.5 ± 1.7: undecided | 12.0 ± 3.6 (9.0–17.0) |"]
 
 
 def seeds(rmax: float, tilts: list, phis: list, **kw) -> dict[str, dict]:
@@ -165,11 +167,11 @@ def test_the_size_check_over_seeds_is_decided_by_two_standard_errors_of_the_diff
     agree = {**seeds(0.0025, [33.0, 34.0, 35.0], [15.0, 16.0, 14.0]), **seeds(0.004, [34.0, 33.0, 35.0], [15.0, 14.0, 16.0])}
     assert collect.size_over_seeds(agree) == [
         "| ideal 130 kPa R 0.625–2.5 mm, safety 0.5 vs R 1–4 mm | 3 of 3: 34.0 ± 1.0, φ 15.0 ± 1.0 "
-        "| 3 of 3: 34.0 ± 1.0, φ 15.0 ± 1.0 | +0.0 ± 0.8 | +0.0 ± 0.8 | yes |"]
+        "| 3 of 3: 34.0 ± 1.0, φ 15.0 ± 1.0 | +0.0 ± 0.8 | +0.0 ± 0.8 | +0.0 ± 0.8 | yes |"]
     stronger = {**seeds(0.0025, [42.0, 44.0, 43.0], [15.0, 16.0, 14.0]), **seeds(0.004, [32.0, 34.0, 33.0], [15.0, 14.0, 16.0])}
-    assert collect.size_over_seeds(stronger)[0].endswith("| +10.0 ± 0.8 | +0.0 ± 0.8 | no |")
+    assert collect.size_over_seeds(stronger)[0].endswith("| +10.0 ± 0.8 | +0.0 ± 0.8 | +0.0 ± 0.8 | no |")
     scattered = {**seeds(0.0025, [30.0, 40.0, 35.0], [15.0, 16.0, 14.0]), **seeds(0.004, [34.0, 33.0, 35.0], [15.0, 14.0, 16.0])}
-    assert collect.size_over_seeds(scattered)[0].endswith("| +1.0 ± 2.9 | +0.0 ± 0.8 | undecided |")
+    assert collect.size_over_seeds(scattered)[0].endswith("| +1.0 ± 2.9 | +0.0 ± 0.8 | +0.0 ± 0.8 | undecided |")
 
 
 def test_one_finer_seed_against_several_coarser_is_undecided_and_a_seed_that_stood_is_left_out():
@@ -177,7 +179,7 @@ def test_one_finer_seed_against_several_coarser_is_undecided_and_a_seed_that_sto
             "fine_s2": {**summary(0.0025, None, [], seed=2), "stable_up_to_deg": 44.0}}
     assert collect.size_over_seeds(runs) == [
         "| ideal 130 kPa R 0.625–2.5 mm, safety 0.5 vs R 1–4 mm | 1 of 2, 1 stood or bounded: 42.0, φ 15.0 "
-        "| 4 of 4: 35.5 ± 4.1, φ 13.6 ± 2.7 | +6.5 | +1.4 | undecided (1 vs 4 seeds) |"]
+        "| 4 of 4: 35.5 ± 4.1, φ 13.6 ± 2.7 | +6.5 | +1.4 | +1.4 | undecided (1 vs 4 seeds) |"]
     assert collect.size_over_seeds({**seeds(0.0025, [42.0], [15.0]), **seeds(0.004, [36.0], [17.0])}) == []
 
 
@@ -189,14 +191,14 @@ def test_seed_means_are_compared_at_the_same_bond_gap_and_at_the_same_bond_densi
     rows = collect.size_over_seeds({**coarse, **{f"t{k}": s for k, s in fine_table_gap.items()}, **fine_dense})
     assert len(rows) == 2
     assert rows[0].startswith("| ideal 130 kPa R 0.625–2.5 mm, safety 0.5 vs R 1–4 mm |")
-    assert rows[0].endswith("| +5.3 ± 3.1 | -4.2 ± 4.5 | undecided |")
+    assert rows[0].endswith("| +5.3 ± 3.1 | -4.2 ± 4.5 | -4.2 ± 4.5 | undecided |")
     assert "bond gap 0.65625 mm" in rows[1] and "vs R 1–4 mm, bond gap 1.05 mm |" in rows[1]
-    assert rows[1].endswith("| +2.0 ± 3.4 | -0.2 ± 1.2 | undecided |")
+    assert rows[1].endswith("| +2.0 ± 3.4 | -0.2 ± 1.2 | -0.2 ± 1.2 | undecided |")
 
 
 def test_a_failure_tilt_within_tolerance_with_an_undecided_phi_is_undecided():
     runs = {**seeds(0.0025, [33.0, 34.0, 35.0], [5.0, 25.0, 15.0]), **seeds(0.004, [34.0, 33.0, 35.0], [15.0, 14.0, 16.0])}
-    assert collect.size_over_seeds(runs)[0].endswith("| +0.0 ± 0.8 | +0.0 ± 5.8 | undecided |")
+    assert collect.size_over_seeds(runs)[0].endswith("| +0.0 ± 0.8 | +0.0 ± 5.8 | +0.0 ± 5.8 | undecided |")
 
 
 def test_a_joint_friction_and_joints_between_pieces_name_their_own_seed_group():
@@ -206,9 +208,9 @@ def test_a_joint_friction_and_joints_between_pieces_name_their_own_seed_group():
             for seed, tilt in zip((1, 2), tilts)}
     assert collect.seed_spread(runs) == [
         "| random 130 kPa R 2–8 mm, safety 0.5 | 1, 2 | 15.0–25.0 | 20.0 ± 7.1 | 0 of 2 | +1.0 ± 5.0: undecided (2 draws) "
-        "| 20.0–20.0 |",
+        "| 20.0 ± 0.0 (20.0–20.0) |",
         "| random 130 kPa R 2–8 mm, safety 0.5, joints between pieces of rock, base joint friction 0.23 | 1, 2 | "
-        "17.0–37.0 | 27.0 ± 14.1 | 1 of 2 | +8.0 ± 10.0: undecided (2 draws) | 20.0–20.0 |"]
+        "17.0–37.0 | 27.0 ± 14.1 | 1 of 2 | +8.0 ± 10.0: undecided (2 draws) | 20.0 ± 0.0 (20.0–20.0) |"]
 
 
 def test_the_random_arrangement_is_spread_over_packings_and_layouts_where_several_layouts_were_run():
@@ -218,10 +220,10 @@ def test_the_random_arrangement_is_spread_over_packings_and_layouts_where_severa
     runs["other_model"] = summary(0.004, 40.0, [20.0], arrangement="random", strength=65e3, seed=2)
     assert collect.seed_spread(runs, collect.DRAW) == [
         "| random 130 kPa R 1–4 mm, safety 0.5 | 1/1, 1/2, 1/3, 2/1, 3/1 | 15.0–29.0 | 20.5 ± 6.0 | 2 of 5 (1 stood) | "
-        "+1.5 ± 3.0: undecided | 20.0–20.0 |"]
+        "+1.5 ± 3.0: undecided | 20.0 ± 0.0 (20.0–20.0) |"]
     assert collect.seed_spread(runs) == [  # the packing seeds of layout 1 alone
         "| random 130 kPa R 1–4 mm, safety 0.5 | 1, 2, 3 | 15.0–29.0 | 21.0 ± 7.2 | 1 of 3 | +2.0 ± 4.2: undecided "
-        "| 20.0–20.0 |"]
+        "| 20.0 ± 0.0 (20.0–20.0) |"]
 
 
 def test_the_mean_over_draws_is_within_the_thesis_tolerance_by_two_standard_errors_or_outside_by_two():
@@ -244,3 +246,19 @@ def test_a_stronger_bond_is_measured_on_the_same_packings_and_added_to_the_weake
     assert rows == ["| ideal 85 kPa R 1–4 mm, safety 0.5 | 95 kPa | 1, 2, 3 | +2.3 ± 0.3 | 4: 34.5 ± 1.3 | "
                     "36.8 ± 0.7 | +1.8 ± 0.7: undecided |"]
     assert collect.strength_pairs({**weak, "strong_s1": strong["r0.004_s1"]}) == []  # one pair says nothing
+
+
+def test_the_size_check_compares_the_overall_phi_of_seeds_whose_points_split_differently():
+    """A finer seed whose failure points split into a toe segment along the table and a 45 degree
+    one above (overall phi atan(25/42) by hand, fitted from its points as its summary predates
+    ``phi_overall_deg``) and two one-surface seeds at that angle, against coarser seeds around
+    it: the overall phi agrees, the first surface's would leave the check undecided."""
+    dog_leg = [(-k * 0.05, max(0, k - 3) * 0.05) for k in range(8)]
+    overall = math.degrees(math.atan(25 / 42))
+    split = {**summary(0.0025, 34.0, [0.0, 45.0], seed=1), "failure_points": dog_leg}
+    assert collect.overall_phi(split) == pytest.approx(overall)
+    assert collect.overall_phi({**split, "phi_overall_deg": 12.0}) == 12.0  # the run's own, where it has one
+    fine = {"f1": split, **{f"f{k}": summary(0.0025, 34.0, [overall], seed=k) for k in (2, 3)}}
+    coarse = seeds(0.004, [33.0, 34.0, 35.0], [overall - 0.5, overall, overall + 0.5])
+    row = collect.size_over_seeds({**fine, **coarse})[0]
+    assert row.endswith("| +0.0 ± 0.6 | +0.0 ± 0.3 | -10.3 ± 10.3 | yes |")  # tilt, overall phi, first surface

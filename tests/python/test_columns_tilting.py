@@ -86,6 +86,7 @@ def test_table_failure_finds_the_hinge_plane_of_toppling_columns_and_ignores_dis
                                     lambda label: label in ("A-1", "B-2", "C-3", "D-4"), np.zeros((0, 2)), 30.0,
                                     floor=-0.01, band=0.01, least_motion=1e-5)
     assert [p.phi_deg for p in result["planes"]] == [pytest.approx(15.0, abs=0.5)]
+    assert result["overall"] == result["planes"][0]  # one plane: the overall surface is it
     assert result["split_p"] is None  # four failure points: no split into two lines of >= 3
     assert result["zones"] == ["toppling"] * 4 + ["no-movement"] * 2
     assert result["t_over_h"] == pytest.approx(layout.far_edges(30.0)[3] / layout.tilted_height(30.0))

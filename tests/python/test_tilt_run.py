@@ -85,7 +85,7 @@ def test_the_block_fails_at_the_first_stage_past_its_friction_angle_and_runs_on_
     summary = json.loads((tmp_path / "summary.json").read_text())
     assert summary["failure_tilt_deg"] == 23.0 and summary["first_failure_tilt_deg"] == 23.0
     assert summary["inputs"] == {"case": "block"} and len(summary["stages"]) == 4
-    assert summary["two_planes_p"] is None  # one column: no failure points to split
+    assert summary["two_planes_p"] is None and summary["phi_overall_deg"] is None  # one column: no surface
     O.reset()
     longer = resumed_run(tmp_path, protocol(post_failure_time=0.06))  # a finished run given a longer run after failure
     assert longer.run() == 23.0 and O.time - longer.state["stages"][-1]["time"] >= 0.06
