@@ -111,7 +111,8 @@ onset of failure ("Based on the physical test conditions at the onset of failure
 angle was set at 19 deg", thesis §5.2, of the random model). 0 (default) stops at the first
 failure, as every table line before 145 ran. Measured: docs/tilting_table.md, "Failures that come
 to rest". The run then goes on for `post_failure_time` so the failure surface develops, and
-toppling.analysis finds it (failure points of the columns, fitted surface(s), phi), the zones,
+toppling.analysis finds it (failure points of the columns, fitted surface(s), phi, and the overall
+surface's phi, one line through all the points), the zones,
 S/H and T/H, from the displacements since the last equilibrium and the cracks.
 
 A checkpoint is saved after every stage and every `checkpoint_every` wall seconds (a stage of
