@@ -15,9 +15,11 @@ from toppling.monitor import MonitoringPoints
 
 def slope(out: str, name: str, centres: np.ndarray, radii: Sequence[float], displacement: np.ndarray,
           cracks: np.ndarray, modes: Sequence[int], planes: Sequence[Plane] = (), toe=(0.0, 0.0),
-          title: str = "", limits: Optional[tuple[float, float, float, float]] = None) -> str:
-    """Discs at ``centres`` coloured by |displacement| [mm], cracks (x tension, + shear) and the
-    failure planes (given in the slope frame of upright columns: x - toe_x, y). ``limits``
+          title: str = "", limits: Optional[tuple[float, float, float, float]] = None,
+          overall: Optional[Plane] = None) -> str:
+    """Discs at ``centres`` coloured by |displacement| [mm], cracks (x tension, + shear), the
+    failure planes (given in the slope frame of upright columns: x - toe_x, y) and, dashed, the
+    ``overall`` surface through all the failure points where they split into planes. ``limits``
     (xmin, xmax, ymin, ymax, e.g. from around()) fixes the view, so that discs that fell off
     the model do not shrink it to a dot; the figure says how many discs it leaves out."""
     fig, ax = output.figure("x (m)", "y (m)", title)
@@ -34,10 +36,12 @@ def slope(out: str, name: str, centres: np.ndarray, radii: Sequence[float], disp
         sel = modes == mode
         if sel.any():
             ax.plot(cracks[sel, 0], cracks[sel, 1], marker, color=colour, ms=3, ls="none", label=label)
-    for k, plane in enumerate(planes):
+    lines = [(plane, "k-", 2, f"failure surface {k + 1}") for k, plane in enumerate(planes)]
+    lines += [(overall, "k--", 1, "overall surface")] if overall is not None else []
+    for plane, style, width, what in lines:
         x = np.array(plane.x_range)
-        ax.plot(toe[0] + x, toe[1] + plane.intercept + plane.slope * x, "k-", lw=2,
-                label=f"failure surface {k + 1}: phi = {plane.phi_deg:.1f} deg")
+        ax.plot(toe[0] + x, toe[1] + plane.intercept + plane.slope * x, style, lw=width,
+                label=f"{what}: phi = {plane.phi_deg:.1f} deg")
     ax.set_aspect("equal")
     ax.autoscale_view()
     if limits is not None:

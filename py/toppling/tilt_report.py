@@ -78,6 +78,7 @@ def plot_failure(run: TiltRun, out: str, result: dict, title: str, name: str) ->
     plots.slope(out, "slope_before", np.array(run.state["reference"]), radii, np.zeros((len(run.ids), 2)), [], [],
                 limits=view, title=f"{name} arrangement at the last equilibrium")
     plots.slope(out, "slope_after", result["now"], radii, result["disp"], cracks, list(law.breakMode),
-                result["planes"], toe=(run.layout.toe_x, 0.0), limits=view, title=title)
+                result["planes"], toe=(run.layout.toe_x, 0.0), limits=view, title=title,
+                overall=result["overall"] if len(result["planes"]) > 1 else None)
     plots.tilt_history(out, run.state["energy"], points, run.failure_tilt)
     plots.monitoring(out, points, points.labels[::2], normal_dydx=TABLE_NORMAL_DYDX)

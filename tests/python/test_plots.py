@@ -3,7 +3,7 @@ import numpy as np
 import pytest
 from matplotlib import image
 
-from toppling import plots
+from toppling import analysis, plots
 
 
 def test_around_widens_the_box_by_a_share_of_its_larger_side():
@@ -29,3 +29,20 @@ def test_a_fallen_disc_does_not_shrink_the_slope_to_a_dot(tmp_path):
         return float((rgb.sum(axis=2) < 1.5).mean())  # dark pixels: discs (displacement 0 is dark purple)
 
     assert drawn_share(fallen, "fallen") == pytest.approx(drawn_share(grid, "standing"), rel=0.1)
+
+
+def test_the_overall_surface_is_drawn_dashed_beside_the_two_it_splits_into(tmp_path):
+    """The dog-leg of a toe segment along the table and a 45 degree one: the overall line runs
+    between them and darkens pixels neither of them does."""
+    points = [(-0.05 * k, 0.05 * max(0, k - 3)) for k in range(8)]
+    planes, overall = analysis.fit_failure_surface(points), analysis.overall_surface(points)
+    centres = np.array([(0.5, 0.5)])
+    view = (-0.4, 0.05, -0.05, 0.3)
+
+    def dark(name, **kw):
+        path = plots.slope(str(tmp_path), name, centres, [0.001], np.zeros_like(centres), [], [], planes,
+                           limits=view, **kw)
+        assert path.endswith(f"{name}.png")
+        return float((image.imread(path)[..., :3].sum(axis=2) < 0.5).sum())
+
+    assert len(planes) == 2 and dark("with", overall=overall) > dark("without") + 50
