@@ -8,8 +8,8 @@ the toe columns' failure points lie on it. This runs the same analysis
 (toppling.analysis.column_failure, the example's arguments) on the snapshot the example writes at
 the end of the failing stage, when fail_columns column tops have just gone fail_displacement:
 the discs' positions and velocities then, and the bonds broken by then (at their discs'
-positions at the last equilibrium). Prints φ, S/H, T/H and the toppling or sliding columns at
-the onset beside the summary's.
+positions at the last equilibrium). Prints φ (and the overall surface's where the points split),
+S/H, T/H and the toppling or sliding columns at the onset beside the summary's.
 """
 import json
 import os
@@ -60,7 +60,9 @@ def onset(folder: str) -> dict:
         0.5 * (reference[broken[:, 0]] + reference[broken[:, 1]]), failed["tilt"],
         floor=-2 * inputs["rmax"], band=2 * inputs["rmax"], least_motion=inputs["rmin"])  # as the example
     labels = [analysis.column_label(k) for k in range(1, layout.count + 1)]
-    return {"phi_deg": [p.phi_deg for p in result["planes"]], "zones": dict(zip(labels, result["zones"])),
+    return {"phi_deg": [p.phi_deg for p in result["planes"]],
+            "phi_overall_deg": result["overall"].phi_deg if result["overall"] else None,
+            "zones": dict(zip(labels, result["zones"])),
             "cracks": len(broken), "s_over_h": result["s_over_h"], "t_over_h": result["t_over_h"]}
 
 
@@ -77,9 +79,16 @@ def main(folders: list[str]) -> None:
             summary = json.load(f)
         o = onset(folder)
         print(f"| {os.path.basename(folder.rstrip('/'))} | {summary['failure_tilt_deg']:g} "
-              f"| {', '.join(f'{p:.1f}' for p in o['phi_deg']) or '-'} | {fmt(o['s_over_h'])}, {fmt(o['t_over_h'])} "
-              f"| {failing(o['zones'])} | {o['cracks']} | {', '.join(f'{p:.1f}' for p in summary['phi_deg']) or '-'} "
+              f"| {phi_text(o)} | {fmt(o['s_over_h'])}, {fmt(o['t_over_h'])} "
+              f"| {failing(o['zones'])} | {o['cracks']} | {phi_text(summary)} "
               f"| {fmt(summary['s_over_h'])}, {fmt(summary['t_over_h'])} |")
+
+
+def phi_text(result: dict) -> str:
+    """The surfaces' phi and, where there are two, the overall surface's (older summaries lack it)."""
+    text = ", ".join(f"{p:.1f}" for p in result["phi_deg"]) or "-"
+    overall = result.get("phi_overall_deg")
+    return f"{text} (overall {overall:.1f})" if len(result["phi_deg"]) > 1 and overall is not None else text
 
 
 def fmt(value) -> str:

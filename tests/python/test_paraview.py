@@ -250,3 +250,12 @@ def test_packing_overlaps_reports_the_discs_as_bonded(empty_scene, tmp_path):
     line = overlaps.report(str(tmp_path))
     assert "3 discs, 1 overlapping pairs" in line and f"largest {0.02 * R:.2g} m (discs {ids[0]} and {ids[1]})" in line
     assert f"disc area {3 * math.pi * R * R:.6f} m2" in line
+
+
+def test_onset_failure_names_the_overall_surface_beside_two():
+    """scripts/onset_failure.py's φ cell: the overall surface beside a split, not beside one
+    surface (it is that surface), nor for a summary older than ``phi_overall_deg``."""
+    onset = load_script("onset_failure")
+    assert onset.phi_text({"phi_deg": [1.9, 12.3], "phi_overall_deg": 15.0}) == "1.9, 12.3 (overall 15.0)"
+    assert onset.phi_text({"phi_deg": [14.7], "phi_overall_deg": 14.7}) == "14.7"
+    assert onset.phi_text({"phi_deg": [2.3, 44.5]}) == "2.3, 44.5" and onset.phi_text({"phi_deg": []}) == "-"
