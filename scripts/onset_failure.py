@@ -21,6 +21,7 @@ from vtkmodules.util.numpy_support import vtk_to_numpy
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from bond_stress_history import bond_pairs, cell_arrays, read_grid, snapshots  # noqa: E402
 from toppling import analysis  # noqa: E402
+from toppling.analysis import phi_text  # noqa: E402
 from toppling.columns import ColumnLayout  # noqa: E402
 
 
@@ -60,9 +61,7 @@ def onset(folder: str) -> dict:
         0.5 * (reference[broken[:, 0]] + reference[broken[:, 1]]), failed["tilt"],
         floor=-2 * inputs["rmax"], band=2 * inputs["rmax"], least_motion=inputs["rmin"])  # as the example
     labels = [analysis.column_label(k) for k in range(1, layout.count + 1)]
-    return {"phi_deg": [p.phi_deg for p in result["planes"]],
-            "phi_overall_deg": result["overall"].phi_deg if result["overall"] else None,
-            "zones": dict(zip(labels, result["zones"])),
+    return {**analysis.surface_angles(result), "zones": dict(zip(labels, result["zones"])),
             "cracks": len(broken), "s_over_h": result["s_over_h"], "t_over_h": result["t_over_h"]}
 
 
@@ -82,13 +81,6 @@ def main(folders: list[str]) -> None:
               f"| {phi_text(o)} | {fmt(o['s_over_h'])}, {fmt(o['t_over_h'])} "
               f"| {failing(o['zones'])} | {o['cracks']} | {phi_text(summary)} "
               f"| {fmt(summary['s_over_h'])}, {fmt(summary['t_over_h'])} |")
-
-
-def phi_text(result: dict) -> str:
-    """The surfaces' phi and, where there are two, the overall surface's (older summaries lack it)."""
-    text = ", ".join(f"{p:.1f}" for p in result["phi_deg"]) or "-"
-    overall = result.get("phi_overall_deg")
-    return f"{text} (overall {overall:.1f})" if len(result["phi_deg"]) > 1 and overall is not None else text
 
 
 def fmt(value) -> str:

@@ -152,6 +152,21 @@ def overall_surface(points: Sequence[tuple[float, float]]) -> Plane:
     return _one_and_split(points)[0]
 
 
+def surface_angles(result: dict) -> dict:
+    """A ``table_failure`` result's angles as summaries keep them: ``phi_deg``, one per
+    surface, and ``phi_overall_deg`` (None without failure points)."""
+    return {"phi_deg": [p.phi_deg for p in result["planes"]],
+            "phi_overall_deg": result["overall"].phi_deg if result["overall"] else None}
+
+
+def phi_text(angles: dict) -> str:
+    """The surfaces' phi and, where there are two, the overall surface's beside them (summaries
+    older than ``phi_overall_deg`` lack it); "-" without a surface."""
+    text = ", ".join(f"{p:.1f}" for p in angles["phi_deg"]) or "-"
+    overall = angles.get("phi_overall_deg")
+    return f"{text} (overall {overall:.1f})" if len(angles["phi_deg"]) > 1 and overall is not None else text
+
+
 def split_p_value(points: Sequence[tuple[float, float]]) -> Optional[float]:
     """How strongly the failure points call for two planes: the p-value of the F-test of the
     best two-line split (two more parameters) against one line, (SSE2 / SSE1)^((n - 4) / 2)

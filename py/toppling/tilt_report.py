@@ -45,17 +45,13 @@ def report_failure(run: TiltRun, out: str, thesis: dict, name: str) -> None:
     summary = dict(
         failure_tilt_deg=tilt,
         failed_in_first_stage=len(state["stages"]) == 1,  # then failure_tilt_deg is only an upper bound
-        phi_deg=[p.phi_deg for p in result["planes"]],
-        phi_overall_deg=result["overall"].phi_deg if result["overall"] else None,
+        **analysis.surface_angles(result),
         planes=len(result["planes"]), two_planes_p=result["split_p"],
         s_over_h=result["s_over_h"], t_over_h=result["t_over_h"],
         zones={analysis.column_label(k + 1): z for k, z in enumerate(result["zones"])},
         failure_points=result["failure_points"], slope_height=result["height"], thesis=thesis, **run.record())
     output.write_summary(out, state["inputs"], **summary)
-    phi_text = (f"phi = {', '.join(f'{p:.1f}' for p in summary['phi_deg'])} deg" if summary["phi_deg"]
-                else "no failure surface found")
-    if len(summary["phi_deg"]) > 1:
-        phi_text += f" (overall {summary['phi_overall_deg']:.1f})"
+    phi_text = f"phi = {analysis.phi_text(summary)} deg" if summary["phi_deg"] else "no failure surface found"
     plot_failure(run, out, result, f"{name}: failed at {tilt:.1f} deg, {phi_text}", name)
     if summary["failed_in_first_stage"]:
         print(f"WARNING: the first stage ({run.protocol.start_tilt} deg) failed: the failure tilt is at most that; "
