@@ -15,9 +15,9 @@ reading of it):
   the threshold over the rotation), moved to the median of the cracks (broken bonds) within
   ``band`` of it when there are any;
 * failure surface: a line fitted through the columns' failure points; two lines (split at
-  the best break point, each through >= 3 points) when one line would leave so large a share
-  of their squared residual that straight lines with scatter do so in less than ``alpha``
-  of cases (``split_p_value``), and the two angles differ by >= ``min_angle_difference``;
+  the best break point, each through >= 3 points) when that lowers the squared residual
+  more than it does for all but a share ``alpha`` of straight lines with scatter
+  (``split_p_value``) and the two angles differ by >= ``min_angle_difference``;
   phi is the angle of a line to the normal of the main joints, positive rising into the
   slope; the overall surface is the one line through all the points, also where two are
   fitted (``overall_surface``), whose phi compares runs that split differently;
@@ -158,6 +158,8 @@ def split_p_value(points: Sequence[tuple[float, float]], draws: int = 4000) -> O
     The F-test's (SSE2 / SSE1)^((n - 4) / 2) is exact only for six points (one split): where the
     break is searched for, its p < 0.05 calls one line two planes in 12 % of cases at 8 points
     and 22 % at 12. None below 6 points (no split into two lines of >= 3)."""
+    if draws < 1:
+        raise ValueError(f"draws = {draws}: the test needs at least 1 straight line to compare with")
     if len(points) < 6:
         return None
     _, sse1, best, p = _one_and_split(points)
@@ -180,6 +182,8 @@ def fit_failure_surface(points: Sequence[tuple[float, float]], alpha: float = 0.
     when ``split_p_value`` < ``alpha`` and their angles differ by >= ``min_angle_difference``."""
     if len(points) < 2:
         raise ValueError(f"{len(points)} failure points: a failure surface needs at least 2")
+    if not 0 < alpha < 1:
+        raise ValueError(f"alpha = {alpha}: the two-planes test's level must lie between 0 and 1")
     one, _, best, _ = _one_and_split(points)
     if best and abs(best[0].phi_deg - best[1].phi_deg) >= min_angle_difference and split_p_value(points) < alpha:
         return [best[0], best[1]]

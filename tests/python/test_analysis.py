@@ -230,3 +230,7 @@ def test_the_split_p_value_holds_its_level_where_the_break_is_searched_for():
     p = np.array([analysis.split_p_value(q) for q in lines])
     assert np.mean(p < 0.05) == pytest.approx(0.05, abs=0.02)
     assert all(len(analysis.fit_failure_surface(q)) == 1 for q, pq in zip(lines, p) if pq >= 0.05)
+    with pytest.raises(ValueError, match="alpha = 1.5: .* between 0 and 1"):
+        analysis.fit_failure_surface(lines[0], alpha=1.5)
+    with pytest.raises(ValueError, match="draws = 0"):
+        analysis.split_p_value(lines[0], draws=0)
