@@ -98,6 +98,8 @@ def failure_point(pos: np.ndarray, disp: np.ndarray, moved_threshold: float,
     return float(pos[:, 0].mean()), float(cut)
 
 
+SPLIT_TEST_DRAWS = 4000  # straight lines the two-planes test compares with: p resolved to 0.00025
+
 @dataclass
 class Plane:
     phi_deg: float  # angle to the normal of the main joints, positive rising into the slope
@@ -149,7 +151,7 @@ def _split_ratios(x: np.ndarray, y: np.ndarray) -> np.ndarray:
     return np.min([sse(0, k) + sse(k, n) for k in range(3, n - 2)], axis=0) / sse(0, n)
 
 
-def split_p_value(points: Sequence[tuple[float, float]], draws: int = 4000) -> Optional[float]:
+def split_p_value(points: Sequence[tuple[float, float]], draws: int = SPLIT_TEST_DRAWS) -> Optional[float]:
     """How strongly the failure points call for two planes: the share of straight lines with
     independent normal scatter, at the same x, whose best split (``_best_split``) lowers the
     squared residual at least as much as the points' does (Monte Carlo over ``draws`` lines,
@@ -163,10 +165,15 @@ def split_p_value(points: Sequence[tuple[float, float]], draws: int = 4000) -> O
     if len(points) < 6:
         return None
     _, sse1, best, p = _one_and_split(points)
+    return _split_p(sse1, best[2], p[:, 0], draws)
+
+
+def _split_p(sse1: float, sse2: float, x: np.ndarray, draws: int) -> float:
+    """``split_p_value`` from the squared residuals of one line and of the best split."""
     if sse1 <= 0:
         return 1.0
-    null = _null_split_ratios(tuple(p[:, 0]), draws)
-    return float((1 + np.count_nonzero(null <= best[2] / sse1)) / (draws + 1))
+    null = _null_split_ratios(tuple(x), draws)
+    return float((1 + np.count_nonzero(null <= sse2 / sse1)) / (draws + 1))
 
 
 @functools.lru_cache(maxsize=16)
@@ -184,8 +191,9 @@ def fit_failure_surface(points: Sequence[tuple[float, float]], alpha: float = 0.
         raise ValueError(f"{len(points)} failure points: a failure surface needs at least 2")
     if not 0 < alpha < 1:
         raise ValueError(f"alpha = {alpha}: the two-planes test's level must lie between 0 and 1")
-    one, _, best, _ = _one_and_split(points)
-    if best and abs(best[0].phi_deg - best[1].phi_deg) >= min_angle_difference and split_p_value(points) < alpha:
+    one, sse1, best, p = _one_and_split(points)
+    if (best and abs(best[0].phi_deg - best[1].phi_deg) >= min_angle_difference
+            and _split_p(sse1, best[2], p[:, 0], SPLIT_TEST_DRAWS) < alpha):
         return [best[0], best[1]]
     return [one]
 
