@@ -100,6 +100,7 @@ def failure_point(pos: np.ndarray, disp: np.ndarray, moved_threshold: float,
 
 SPLIT_TEST_DRAWS = 4000  # straight lines the two-planes test compares with: p resolved to 0.00025
 
+
 @dataclass
 class Plane:
     phi_deg: float  # angle to the normal of the main joints, positive rising into the slope
