@@ -1,0 +1,75 @@
+"""Issue 4's verdicts on the ideal model's failure tilt at 95 kPa, recomputed from the record of
+every seed in docs/tilting_table.md (the table after "Every seed at 95 kPa"), so that they can
+be checked on a machine that has none of the runs.
+
+    python3 scripts/seed_record.py [docs/tilting_table.md]
+
+For each packing size (a column of the record): seeds, mean ± standard deviation, median, seeds
+within 3 deg of the thesis' 35 deg, the mean minus 35 with its standard error and verdict
+(collect_tilting_table.mean_against), and the margin |mean - 35| + 2 standard errors that the
+verdict compares with 3 deg. Then the size check: each finer column's mean minus the first
+column's, with the verdict of collect_tilting_table.mean_difference.
+"""
+import os
+import re
+import statistics
+import sys
+from typing import Iterable
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import collect_tilting_table as collect  # noqa: E402
+
+RECORD_HEADING = "**Every seed at 95 kPa.**"
+THESIS_TILT_DEG = 35.0  # thesis Table 5-4, the ideal model
+TILT_CELL = re.compile(r"\s*(\d+(?:\.\d+)?)\s*\(")  # "38 (190)": failure tilt (table line)
+
+
+def read_record(lines: Iterable[str]) -> dict[str, list[float]]:
+    """Failure tilts by packing size (the column's header up to its colon) from the first
+    Markdown table after RECORD_HEADING; a cell without a tilt (a seed not run, "–") is left out."""
+    lines = iter(lines)
+    if not any(line.startswith(RECORD_HEADING) for line in lines):
+        raise ValueError(f"no line starts with {RECORD_HEADING!r}")
+    header = next(line for line in lines if line.startswith("|"))
+    sizes = [cell.split(":")[0].strip() for cell in header.strip().strip("|").split("|")[1:]]
+    tilts: dict[str, list[float]] = {size: [] for size in sizes}
+    next(lines)  # the header's rule
+    for line in lines:
+        if not line.startswith("|"):
+            break
+        for size, cell in zip(sizes, line.strip().strip("|").split("|")[1:]):
+            match = TILT_CELL.match(cell)
+            if match:
+                tilts[size].append(float(match.group(1)))
+    return tilts
+
+
+def margin(tilts: list[float]) -> float:
+    """|mean - 35| + 2 standard errors: at most 3 deg is "met" (collect_tilting_table.within)."""
+    se = statistics.stdev(tilts) / len(tilts) ** 0.5
+    return abs(statistics.mean(tilts) - THESIS_TILT_DEG) + 2 * se
+
+
+def report(tilts: dict[str, list[float]]) -> list[str]:
+    """The Markdown rows of the verdicts and the size check (module docstring)."""
+    rows = [f"| packing | seeds | failure tilt (°) | median | within 3° of {THESIS_TILT_DEG:g}° | "
+            f"{collect.MEAN_AGAINST_HEADER} | margin (°) |", "|---|---|---|---|---|---|---|"]
+    for size, values in tilts.items():
+        inside = sum(abs(t - THESIS_TILT_DEG) <= collect.TARGET_TOLERANCE_DEG for t in values)
+        rows.append(f"| {size} | {len(values)} | {collect.stats_text(values)} | {statistics.median(values):g} | "
+                    f"{inside} | {collect.mean_against(values, THESIS_TILT_DEG)} | {margin(values):.2f} |")
+    coarse_size, coarse = next(iter(tilts.items()))
+    rows += ["", "| size check | difference of the means ± standard error (°) | within 2°? |", "|---|---|---|"]
+    for size, fine in list(tilts.items())[1:]:
+        difference, verdict = collect.mean_difference(fine, coarse)
+        rows.append(f"| {size} − {coarse_size} | {difference} | {verdict} |")
+    return rows
+
+
+def main(path: str) -> None:
+    with open(path) as f:
+        print("\n".join(report(read_record(f))))
+
+
+if __name__ == "__main__":
+    main(sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..", "docs", "tilting_table.md"))

@@ -1,0 +1,53 @@
+"""scripts/seed_record.py on a made-up record and on the committed one."""
+import os
+
+import pytest
+from conftest import REPO, load_script
+
+record = load_script("seed_record")
+
+MADE_UP = """Some text.
+
+**Every seed at 95 kPa.** The run each seed counts with:
+
+| seed | coarse: failure tilt (°) (line) | fine, a gap: failure tilt (°) (line) |
+|---|---|---|
+| 1 | 30 (10) | 34 (20) |
+| 2 | 40 (11) | – (stopped: the ramp broke 5 bonds) |
+| 3 | 35 (12) | 36 (22) |
+| 4 | 39 (13) | 35 (23) |
+
+Text after the table, | with a bar.
+""".splitlines()
+
+
+def test_the_record_is_read_by_column_and_a_seed_not_run_is_left_out():
+    assert record.read_record(MADE_UP) == {"coarse": [30.0, 40.0, 35.0, 39.0], "fine, a gap": [34.0, 36.0, 35.0]}
+
+
+def test_the_margin_is_the_distance_from_35_plus_two_standard_errors():
+    # mean 36, sample variance 62/3, standard error 2.27
+    assert record.margin([30.0, 40.0, 35.0, 39.0]) == pytest.approx(1.0 + 2 * (62 / 3 / 4) ** 0.5)
+
+
+def test_the_report_gives_each_size_its_verdict_and_the_size_check():
+    rows = record.report(record.read_record(MADE_UP))
+    assert rows[2] == "| coarse | 4 | 36.0 ± 4.5 | 37 | 1 | +1.0 ± 2.3: undecided | 5.55 |"
+    assert rows[3] == "| fine, a gap | 3 | 35.0 ± 1.0 | 35 | 3 | +0.0 ± 0.6: yes | 1.15 |"
+    assert rows[-1] == "| fine, a gap − coarse | -1.0 ± 2.3 | undecided |"
+
+
+def test_a_file_without_the_record_names_what_is_missing():
+    with pytest.raises(ValueError, match="Every seed at 95 kPa"):
+        record.read_record(["| a | b |"])
+
+
+def test_the_committed_record_lists_seeds_1_to_n_with_a_coarse_tilt_for_each():
+    with open(os.path.join(REPO, "docs", "tilting_table.md")) as f:
+        lines = f.read().splitlines()
+    start = next(i for i, line in enumerate(lines) if line.startswith(record.RECORD_HEADING))
+    table = next(i for i in range(start, len(lines)) if lines[i].startswith("|"))
+    end = next(i for i in range(table, len(lines)) if not lines[i].startswith("|"))
+    seeds = [int(line.split("|")[1]) for line in lines[table + 2:end]]
+    assert seeds == list(range(1, len(seeds) + 1))
+    assert len(record.read_record(lines)["R 1–4 mm"]) == len(seeds)
