@@ -127,28 +127,38 @@ def _best_split(p: np.ndarray) -> Optional[tuple[Plane, Plane, float]]:
     return best
 
 
+def _toe_first(points: Sequence[tuple[float, float]]) -> np.ndarray:
+    return np.array(sorted(points, key=lambda q: -q[0]))  # the toe has the largest x
+
+
 def _one_and_split(points: Sequence[tuple[float, float]]
                    ) -> tuple[Plane, float, Optional[tuple[Plane, Plane, float]], np.ndarray]:
     """The one line through the points with its squared residual, their best split
     (``_best_split``) and the points ordered toe first."""
-    p = np.array(sorted(points, key=lambda q: -q[0]))  # toe first: the toe has the largest x
+    p = _toe_first(points)
     one, sse1 = _line(p[:, 0], p[:, 1])
     return one, sse1, _best_split(p), p
 
 
-def _split_ratios(x: np.ndarray, y: np.ndarray) -> np.ndarray:
-    """For each row of ``y`` (heights at ``x``, toe first): the best split's squared residual
-    (``_best_split``) over one line's, from running sums so that thousands of rows cost one
-    pass. Centring and scaling ``x`` only conditions the sums: the ratio does not change."""
+def _segment_sse(x: np.ndarray, y: np.ndarray) -> Callable[[int, int], np.ndarray]:
+    """``sse(a, b)``: for each row of ``y`` (heights at ``x``), the squared residual of the line
+    through points a .. b - 1, from running sums so that thousands of rows cost one pass.
+    Centring and scaling ``x`` only conditions the sums: the residuals do not change."""
     x = (x - x.mean()) / x.std()
     sums = [np.concatenate([np.zeros((len(y), 1)), np.cumsum(v, axis=1)], axis=1)
             for v in (np.ones_like(y), np.broadcast_to(x, y.shape), np.broadcast_to(x * x, y.shape), y, y * y, x * y)]
 
-    def sse(a: int, b: int) -> np.ndarray:  # line through points a .. b - 1
+    def sse(a: int, b: int) -> np.ndarray:
         m, sx, sxx, sy, syy, sxy = (s[:, b] - s[:, a] for s in sums)
         return syy - sy * sy / m - (sxy - sx * sy / m) ** 2 / (sxx - sx * sx / m)
 
-    n = len(x)
+    return sse
+
+
+def _split_ratios(x: np.ndarray, y: np.ndarray) -> np.ndarray:
+    """For each row of ``y`` (heights at ``x``, toe first): the best split's squared residual
+    (``_best_split``) over one line's."""
+    sse, n = _segment_sse(x, y), len(x)
     return np.min([sse(0, k) + sse(k, n) for k in range(3, n - 2)], axis=0) / sse(0, n)
 
 
@@ -182,6 +192,80 @@ def _null_split_ratios(x: tuple[float, ...], draws: int) -> np.ndarray:
     """``_split_ratios`` of ``draws`` straight lines with standard normal scatter at ``x``
     (seeded); cached, as a run's analysis and tests ask again for the same ``x``."""
     return _split_ratios(np.array(x), np.random.default_rng(0).standard_normal((draws, len(x))))
+
+
+def _cuts(xs: Sequence[np.ndarray]) -> np.ndarray:
+    """The cuts common to runs at ``xs``: midway between successive distinct x of their points."""
+    pooled = np.unique(np.concatenate(xs))
+    return (pooled[1:] + pooled[:-1]) / 2
+
+
+def _pooled_split_ratios(xs: Sequence[np.ndarray], ys: Sequence[np.ndarray]) -> np.ndarray:
+    """For each row of the ``ys`` (one array of rows per run, heights at its ``xs``, toe first)
+    and each of the ``_cuts``: the mean over the runs of each run's squared residual of two
+    lines split at the cut over its residual of one line (1 for a run with fewer than 3 points
+    on a side of the cut, or on a line). Each run's ratio depends neither on its line nor on
+    its scatter, so runs that scatter more do not outweigh the others."""
+    cuts = _cuts(xs)
+    total = np.zeros((len(ys[0]), len(cuts)))
+    for x, y in zip(xs, ys):
+        sse, n = _segment_sse(x, y), len(x)
+        whole = sse(0, n)
+        for j, k in enumerate(np.count_nonzero(x[:, None] > cuts, axis=0)):
+            if 3 <= k <= n - 3:
+                total[:, j] += np.divide(sse(0, k) + sse(k, n), whole, out=np.ones_like(whole), where=whole > 0)
+            else:
+                total[:, j] += 1.0
+    return total / len(xs)
+
+
+def _pooled(runs: Sequence[Sequence[tuple[float, float]]]) -> Optional[tuple[list[np.ndarray], np.ndarray]]:
+    """The runs of two points or more (toe first) and their ``_pooled_split_ratios`` by cut;
+    None when no run has the 6 points a split needs."""
+    runs = [_toe_first(points) for points in runs if len(points) >= 2]
+    if not any(len(p) >= 6 for p in runs):
+        return None
+    return runs, _pooled_split_ratios([p[:, 0] for p in runs], [p[None, :, 1] for p in runs])[0]
+
+
+def pooled_split_p_value(runs: Sequence[Sequence[tuple[float, float]]], draws: int = SPLIT_TEST_DRAWS
+                         ) -> Optional[float]:
+    """``split_p_value`` for several runs of one model (packing or layout draws) at once: whether
+    their failure points call for two planes that break at the same place in each, each run
+    with lines and scatter of its own. The statistic is the least over common cuts of the mean
+    of the runs' ratios of two lines' squared residual to one line's; p is the share of
+    ``draws`` sets of straight lines with independent normal scatter, at the runs' own x, whose
+    statistic is as small (seeded). A break that each run's few points show only weakly adds
+    up over the runs. Runs of fewer than 2 points are left out; None when no run has 6."""
+    if draws < 1:
+        raise ValueError(f"draws = {draws}: the test needs at least 1 set of straight lines to compare with")
+    pooled = _pooled(runs)
+    if pooled is None:
+        return None
+    runs, ratios = pooled
+    null = _null_pooled_split_ratios(tuple(tuple(p[:, 0]) for p in runs), draws)
+    return float((1 + np.count_nonzero(null <= ratios.min())) / (draws + 1))
+
+
+def pooled_split(runs: Sequence[Sequence[tuple[float, float]]]) -> Optional[tuple[float, list[tuple[Plane, Plane]]]]:
+    """The common cut (an x) where ``pooled_split_p_value``'s statistic is least, and the toe
+    and upper lines of each run with >= 3 points on both sides of it; None as that p is."""
+    pooled = _pooled(runs)
+    if pooled is None:
+        return None
+    runs, ratios = pooled
+    cut = float(_cuts([p[:, 0] for p in runs])[np.argmin(ratios)])
+    sides = [(p[p[:, 0] > cut], p[p[:, 0] <= cut]) for p in runs]
+    return cut, [(_line(*a.T)[0], _line(*b.T)[0]) for a, b in sides if min(len(a), len(b)) >= 3]
+
+
+@functools.lru_cache(maxsize=16)
+def _null_pooled_split_ratios(xs: tuple[tuple[float, ...], ...], draws: int) -> np.ndarray:
+    """The least ``_pooled_split_ratios`` over the cuts of ``draws`` sets of straight lines with
+    standard normal scatter at ``xs`` (seeded as ``_null_split_ratios``, so one run gives its
+    values)."""
+    rng = np.random.default_rng(0)
+    return _pooled_split_ratios([np.array(x) for x in xs], [rng.standard_normal((draws, len(x))) for x in xs]).min(axis=1)
 
 
 def fit_failure_surface(points: Sequence[tuple[float, float]], alpha: float = 0.05,

@@ -234,3 +234,49 @@ def test_the_split_p_value_holds_its_level_where_the_break_is_searched_for():
         analysis.fit_failure_surface(lines[0], alpha=1.5)
     with pytest.raises(ValueError, match="draws = 0"):
         analysis.split_p_value(lines[0], draws=0)
+
+
+def two_surface_heights(x: np.ndarray) -> np.ndarray:
+    """14 degrees over the five columns at the toe, 24 above (the thesis' random model)."""
+    t1, t2, xb = math.tan(math.radians(14)), math.tan(math.radians(24)), -5 * WIDTH
+    return np.where(x > xb, -t1 * x, -t1 * xb - t2 * (x - xb))
+
+
+def test_the_pooled_split_p_value_of_one_run_is_its_split_p_value():
+    rng = np.random.default_rng(4)
+    x = -np.arange(1, 11) * WIDTH
+    for run in (list(zip(x, two_surface_heights(x) + rng.normal(0, 0.01, 10))), noisy_straight_points()):
+        assert analysis.pooled_split_p_value([run, run[:1]]) == analysis.split_p_value(run)
+    assert analysis.pooled_split_p_value([noisy_straight_points()[:5]] * 3) is None
+    assert analysis.pooled_split([noisy_straight_points()[:5]] * 3) is None
+    with pytest.raises(ValueError, match="draws = 0"):
+        analysis.pooled_split_p_value([noisy_straight_points()], draws=0)
+
+
+def test_a_break_too_weak_to_show_in_one_run_shows_in_six():
+    """Six runs on the same two surfaces, scattered by 1 cm: most runs alone fall short of two
+    planes at 5 %, the six together do not, and their common cut is the break."""
+    rng = np.random.default_rng(3)
+    x = -np.arange(1, 11) * WIDTH + WIDTH / 2
+    runs = [list(zip(x, two_surface_heights(x) + rng.normal(0, 0.01, 10))) for _ in range(6)]
+    assert sum(analysis.split_p_value(run) >= 0.05 for run in runs) >= 4
+    assert analysis.pooled_split_p_value(runs) < 0.01
+    cut, lines = analysis.pooled_split(runs)
+    assert -7 * WIDTH < cut < -3 * WIDTH  # within a column of the break (-5 widths: between columns 5 and 6)
+    assert len(lines) == 6
+    assert np.mean([toe.phi_deg for toe, _ in lines]) == pytest.approx(14, abs=3)
+    assert np.mean([upper.phi_deg for _, upper in lines]) == pytest.approx(24, abs=3)
+
+
+def test_the_pooled_split_p_value_holds_its_level_over_runs_with_lines_of_their_own():
+    """Four runs of eight points, each a straight line of its own slope, height and scatter
+    (2 to 20 mm) at x of its own: of 1000 such sets 5 % have p < 0.05. Were the runs' lines
+    pooled into one, their different slopes would read as a break; were their residuals
+    summed, the most scattered run would decide alone."""
+    rng = np.random.default_rng(7)
+    xs = [-np.arange(1, 9) * WIDTH + rng.normal(0, 0.002, 8) for _ in range(4)]
+    p = np.array([analysis.pooled_split_p_value([list(zip(x, rng.normal(0.02, 0.01) - rng.uniform(0, 1) * x
+                                                               + rng.normal(0, rng.uniform(0.002, 0.02), 8)))
+                                                 for x in xs])
+                  for _ in range(1000)])
+    assert np.mean(p < 0.05) == pytest.approx(0.05, abs=0.02)

@@ -1,0 +1,63 @@
+"""One failure surface or two, over all the draws of one tilting-table model at once: each run
+alone has about ten failure points, too few to show a break of 10 deg against centimetres of
+scatter; the same break in every run adds up (toppling.analysis.pooled_split_p_value).
+
+    source scripts/env.sh; /usr/bin/python3 scripts/pooled_surfaces.py results/tilting_table 'pattern' [...]
+
+Takes the runs whose out folder matches a shell-style pattern and has failure points. Prints
+each run's failure tilt, points, overall phi and split_p_value, then the pooled p, the common
+cut (its distance from the toe) and the mean ± standard deviation of the runs' toe and upper
+phi at that cut (the runs with three points or more on each side).
+"""
+import fnmatch
+import glob
+import json
+import os
+import statistics
+import sys
+
+from toppling import analysis
+
+
+def load(folder: str, patterns: list[str]) -> dict[str, dict]:
+    runs = {}
+    for path in sorted(glob.glob(os.path.join(folder, "*", "summary.json"))):
+        name = os.path.basename(os.path.dirname(path))
+        if any(fnmatch.fnmatchcase(name, pattern) for pattern in patterns):
+            with open(path) as f:
+                summary = json.load(f)
+            if summary.get("failure_points"):
+                runs[name] = summary
+    return runs
+
+
+def spread(values: list[float]) -> str:
+    return f"{statistics.mean(values):.1f} ± {statistics.stdev(values):.1f}" if len(values) > 1 else f"{values[0]:.1f}"
+
+
+def main(folder: str, patterns: list[str]) -> None:
+    runs = load(folder, patterns)
+    if not runs:
+        sys.exit(f"no summary.json with failure points under {folder} matches {patterns}")
+    print("| run | failure tilt (°) | failure points | overall φ (°) | split p |")
+    print("|---|---|---|---|---|")
+    for name, s in runs.items():
+        p = analysis.split_p_value(s["failure_points"])
+        print(f"| {name} | {s['failure_tilt_deg']} | {len(s['failure_points'])} | "
+              f"{analysis.overall_surface(s['failure_points']).phi_deg:.1f} | {'-' if p is None else f'{p:.3f}'} |")
+    points = [s["failure_points"] for s in runs.values()]
+    p = analysis.pooled_split_p_value(points)
+    split = analysis.pooled_split(points)
+    print(f"\n{len(runs)} runs pooled: p = {'-' if p is None else f'{p:.4f}'}", end="")
+    if split and split[1]:
+        cut, lines = split
+        print(f"; common cut {-cut * 1e3:.0f} mm from the toe; at it, over {len(lines)} runs, toe φ "
+              f"{spread([toe.phi_deg for toe, _ in lines])}°, upper φ {spread([up.phi_deg for _, up in lines])}°")
+    else:
+        print()
+
+
+if __name__ == "__main__":
+    if len(sys.argv) < 3:
+        sys.exit(__doc__)
+    main(sys.argv[1], sys.argv[2:])
