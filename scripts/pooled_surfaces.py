@@ -6,8 +6,10 @@ scatter; the same break in every run adds up (toppling.analysis.pooled_split_p_v
 
 Takes the runs whose out folder matches a shell-style pattern and has failure points. Prints
 each run's failure tilt, points, overall phi and split_p_value, then the pooled p, the common
-cut (its distance from the toe) and the mean ± standard deviation of the runs' toe and upper
-phi at that cut (the runs with three points or more on each side).
+cut (its distance from the toe), the mean ± standard deviation of the runs' toe and upper phi
+at that cut (the runs with three points or more on each side) and in how many of them the toe
+line is the shallower (the thesis' random model: 14 deg at the toe, 24 above). The test is
+two-sided: bends either way add up.
 """
 import fnmatch
 import glob
@@ -52,7 +54,8 @@ def main(folder: str, patterns: list[str]) -> None:
     if split and split[1]:
         cut, lines = split
         print(f"; common cut {-cut * 1e3:.0f} mm from the toe; at it, over {len(lines)} runs, toe φ "
-              f"{spread([toe.phi_deg for toe, _ in lines])}°, upper φ {spread([up.phi_deg for _, up in lines])}°")
+              f"{spread([toe.phi_deg for toe, _ in lines])}°, upper φ {spread([up.phi_deg for _, up in lines])}°, "
+              f"the toe shallower in {sum(toe.phi_deg < up.phi_deg for toe, up in lines)}")
     else:
         print()
 
