@@ -155,13 +155,6 @@ def _segment_sse(x: np.ndarray, y: np.ndarray) -> Callable[[int, int], np.ndarra
     return sse
 
 
-def _split_ratios(x: np.ndarray, y: np.ndarray) -> np.ndarray:
-    """For each row of ``y`` (heights at ``x``, toe first): the best split's squared residual
-    (``_best_split``) over one line's."""
-    sse, n = _segment_sse(x, y), len(x)
-    return np.min([sse(0, k) + sse(k, n) for k in range(3, n - 2)], axis=0) / sse(0, n)
-
-
 def split_p_value(points: Sequence[tuple[float, float]], draws: int = SPLIT_TEST_DRAWS) -> Optional[float]:
     """How strongly the failure points call for two planes: the share of straight lines with
     independent normal scatter, at the same x, whose best split (``_best_split``) lowers the
@@ -183,15 +176,8 @@ def _split_p(sse1: float, sse2: float, x: np.ndarray, draws: int) -> float:
     """``split_p_value`` from the squared residuals of one line and of the best split."""
     if sse1 <= 0:
         return 1.0
-    null = _null_split_ratios(tuple(x), draws)
+    null = _null_split_ratios((tuple(x),), draws)
     return float((1 + np.count_nonzero(null <= sse2 / sse1)) / (draws + 1))
-
-
-@functools.lru_cache(maxsize=16)
-def _null_split_ratios(x: tuple[float, ...], draws: int) -> np.ndarray:
-    """``_split_ratios`` of ``draws`` straight lines with standard normal scatter at ``x``
-    (seeded); cached, as a run's analysis and tests ask again for the same ``x``."""
-    return _split_ratios(np.array(x), np.random.default_rng(0).standard_normal((draws, len(x))))
 
 
 def _cuts(xs: Sequence[np.ndarray]) -> np.ndarray:
@@ -243,7 +229,7 @@ def pooled_split_p_value(runs: Sequence[Sequence[tuple[float, float]]], draws: i
     if pooled is None:
         return None
     runs, ratios = pooled
-    null = _null_pooled_split_ratios(tuple(tuple(p[:, 0]) for p in runs), draws)
+    null = _null_split_ratios(tuple(tuple(p[:, 0]) for p in runs), draws)
     return float((1 + np.count_nonzero(null <= ratios.min())) / (draws + 1))
 
 
@@ -260,10 +246,10 @@ def pooled_split(runs: Sequence[Sequence[tuple[float, float]]]) -> Optional[tupl
 
 
 @functools.lru_cache(maxsize=16)
-def _null_pooled_split_ratios(xs: tuple[tuple[float, ...], ...], draws: int) -> np.ndarray:
+def _null_split_ratios(xs: tuple[tuple[float, ...], ...], draws: int) -> np.ndarray:
     """The least ``_pooled_split_ratios`` over the cuts of ``draws`` sets of straight lines with
-    standard normal scatter at ``xs`` (seeded as ``_null_split_ratios``, so one run gives its
-    values)."""
+    standard normal scatter at the runs' ``xs`` (seeded; for one run, its best split's ratio);
+    cached, as a run's analysis and tests ask again for the same ``xs``."""
     rng = np.random.default_rng(0)
     return _pooled_split_ratios([np.array(x) for x in xs], [rng.standard_normal((draws, len(x))) for x in xs]).min(axis=1)
 
