@@ -20,7 +20,9 @@ reading of it):
   (``split_p_value``) and the two angles differ by >= ``min_angle_difference``;
   phi is the angle of a line to the normal of the main joints, positive rising into the
   slope; the overall surface is the one line through all the points, also where two are
-  fitted (``overall_surface``), whose phi compares runs that split differently;
+  fitted (``overall_surface``), whose phi compares runs that split differently; over several
+  runs of one model the same test with one cut common to them (``pooled_split_p_value``), as
+  a bend a run's few points show weakly adds up over the runs;
 * zones per column, from its top point: ``no-movement`` (total displacement below
   ``still``), ``stable`` (moved, but came to rest), ``toppling`` (still moving, the top moving
   more than twice as much as the base), ``sliding`` (still moving, base moving with the top);
