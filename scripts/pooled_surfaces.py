@@ -11,26 +11,19 @@ at that cut (the runs with three points or more on each side) and in how many of
 line is the shallower (the thesis' random model: 14 deg at the toe, 24 above). The test is
 two-sided: bends either way add up.
 """
-import fnmatch
-import glob
-import json
 import os
 import statistics
 import sys
 
 from toppling import analysis
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import collect_tilting_table as collect  # noqa: E402
+
 
 def load(folder: str, patterns: list[str]) -> dict[str, dict]:
-    runs = {}
-    for path in sorted(glob.glob(os.path.join(folder, "*", "summary.json"))):
-        name = os.path.basename(os.path.dirname(path))
-        if any(fnmatch.fnmatchcase(name, pattern) for pattern in patterns):
-            with open(path) as f:
-                summary = json.load(f)
-            if summary.get("failure_points"):
-                runs[name] = summary
-    return runs
+    """The summaries of collect_tilting_table.load that have failure points."""
+    return {name: s for name, s in collect.load(folder, patterns).items() if s.get("failure_points")}
 
 
 def spread(values: list[float]) -> str:
