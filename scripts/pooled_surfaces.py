@@ -5,11 +5,11 @@ scatter; the same break in every run adds up (toppling.analysis.pooled_split_p_v
     source scripts/env.sh; /usr/bin/python3 scripts/pooled_surfaces.py results/tilting_table 'pattern' [...]
 
 Takes the runs whose out folder matches a shell-style pattern and has failure points. Prints
-each run's failure tilt, points, overall phi and split_p_value, then the pooled p, the common
-cut (its distance from the toe), the mean ± standard deviation of the runs' toe and upper phi
-at that cut (the runs with three points or more on each side) and in how many of them the toe
-line is the shallower (the thesis' random model: 14 deg at the toe, 24 above). The test is
-two-sided: bends either way add up.
+each run's failure tilt, points, overall phi, split_p_value and its toe and upper phi at the
+common cut (a run with fewer than three points on a side: '-'), then the pooled p, the common
+cut (its distance from the toe), the mean ± standard deviation of those toe and upper phi and
+in how many runs the toe line is the shallower (the thesis' random model: 14 deg at the toe,
+24 above). The test is two-sided: bends either way add up.
 """
 import os
 import statistics
@@ -34,19 +34,20 @@ def main(folder: str, patterns: list[str]) -> None:
     runs = load(folder, patterns)
     if not runs:
         sys.exit(f"no summary.json with failure points under {folder} matches {patterns}")
-    print("| run | failure tilt (°) | failure points | overall φ (°) | split p |")
-    print("|---|---|---|---|---|")
-    for name, s in runs.items():
-        p = analysis.split_p_value(s["failure_points"])
-        print(f"| {name} | {s['failure_tilt_deg']} | {len(s['failure_points'])} | "
-              f"{analysis.overall_surface(s['failure_points']).phi_deg:.1f} | {'-' if p is None else f'{p:.3f}'} |")
     points = [s["failure_points"] for s in runs.values()]
-    p = analysis.pooled_split_p_value(points)
-    split = analysis.pooled_split(points)
+    p, split = analysis.pooled_split_p_value(points), analysis.pooled_split(points)
+    at_cut = split[1] if split else [None] * len(runs)
+    print("| run | failure tilt (°) | failure points | overall φ (°) | split p | toe φ / upper φ at the common cut (°) |")
+    print("|---|---|---|---|---|---|")
+    for (name, s), lines in zip(runs.items(), at_cut):
+        alone = analysis.split_p_value(s["failure_points"])
+        print(f"| {name} | {s['failure_tilt_deg']} | {len(s['failure_points'])} | "
+              f"{analysis.overall_surface(s['failure_points']).phi_deg:.1f} | {'-' if alone is None else f'{alone:.3f}'} | "
+              f"{'-' if lines is None else f'{lines[0].phi_deg:.1f} / {lines[1].phi_deg:.1f}'} |")
     print(f"\n{len(runs)} runs pooled: p = {'-' if p is None else f'{p:.4f}'}", end="")
-    if split and split[1]:
-        cut, lines = split
-        print(f"; common cut {-cut * 1e3:.0f} mm from the toe; at it, over {len(lines)} runs, toe φ "
+    lines = [pair for pair in at_cut if pair]
+    if lines:
+        print(f"; common cut {-split[0] * 1e3:.0f} mm from the toe; at it, over {len(lines)} runs, toe φ "
               f"{spread([toe.phi_deg for toe, _ in lines])}°, upper φ {spread([up.phi_deg for _, up in lines])}°, "
               f"the toe shallower in {sum(toe.phi_deg < up.phi_deg for toe, up in lines)}")
     else:

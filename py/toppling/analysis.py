@@ -235,16 +235,22 @@ def pooled_split_p_value(runs: Sequence[Sequence[tuple[float, float]]], draws: i
     return float((1 + np.count_nonzero(null <= ratios.min())) / (draws + 1))
 
 
-def pooled_split(runs: Sequence[Sequence[tuple[float, float]]]) -> Optional[tuple[float, list[tuple[Plane, Plane]]]]:
-    """The common cut (an x) where ``pooled_split_p_value``'s statistic is least, and the toe
-    and upper lines of each run with >= 3 points on both sides of it; None as that p is."""
+def pooled_split(runs: Sequence[Sequence[tuple[float, float]]]
+                 ) -> Optional[tuple[float, list[Optional[tuple[Plane, Plane]]]]]:
+    """The common cut (an x) where ``pooled_split_p_value``'s statistic is least, and for each
+    run in order its toe and upper lines at the cut (None for a run with fewer than 3 points
+    on a side of it); None as that p is."""
     pooled = _pooled(runs)
     if pooled is None:
         return None
-    runs, ratios = pooled
-    cut = float(_cuts([p[:, 0] for p in runs])[np.argmin(ratios)])
-    sides = [(p[p[:, 0] > cut], p[p[:, 0] <= cut]) for p in runs]
-    return cut, [(_line(*a.T)[0], _line(*b.T)[0]) for a, b in sides if min(len(a), len(b)) >= 3]
+    kept, ratios = pooled
+    cut = float(_cuts([p[:, 0] for p in kept])[np.argmin(ratios)])
+    return cut, [_lines_at_cut(np.array(points, dtype=float).reshape(-1, 2), cut) for points in runs]
+
+
+def _lines_at_cut(p: np.ndarray, cut: float) -> Optional[tuple[Plane, Plane]]:
+    toe, upper = p[p[:, 0] > cut], p[p[:, 0] <= cut]
+    return (_line(*toe.T)[0], _line(*upper.T)[0]) if min(len(toe), len(upper)) >= 3 else None
 
 
 @functools.lru_cache(maxsize=16)

@@ -247,6 +247,8 @@ def test_the_pooled_split_p_value_of_one_run_is_its_split_p_value():
     x = -np.arange(1, 11) * WIDTH
     for run in (list(zip(x, two_surface_heights(x) + rng.normal(0, 0.01, 10))), noisy_straight_points()):
         assert analysis.pooled_split_p_value([run, run[:1]]) == analysis.split_p_value(run)
+        cut, lines = analysis.pooled_split([run, run[:1]])
+        assert lines[1] is None and lines[0] is not None  # one entry per run, in order
     assert analysis.pooled_split_p_value([noisy_straight_points()[:5]] * 3) is None
     assert analysis.pooled_split([noisy_straight_points()[:5]] * 3) is None
     with pytest.raises(ValueError, match="draws = 0"):

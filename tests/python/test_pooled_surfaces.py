@@ -6,6 +6,7 @@ import os
 import re
 
 import numpy as np
+import pytest
 from conftest import load_script
 
 pooled = load_script("pooled_surfaces")
@@ -27,7 +28,10 @@ def test_the_runs_of_a_pattern_are_pooled_and_the_cut_found(tmp_path, capsys):
     write_runs(tmp_path)
     pooled.main(str(tmp_path), ["random_*", "stood"])
     out = capsys.readouterr().out.splitlines()
-    assert len([line for line in out if line.startswith("| random_")]) == 6
+    rows = [line for line in out if line.startswith("| random_")]
+    assert len(rows) == 6
+    at_cut = [[float(v) for v in row.split("|")[-2].split("/")] for row in rows]
+    assert np.mean(at_cut, axis=0) == pytest.approx([14, 24], abs=3)  # each run's lines at the common cut
     assert out[-1].startswith("6 runs pooled: p = 0.00")
     cut_mm = float(re.search(r"common cut (\d+) mm from the toe", out[-1]).group(1))
     assert 150 < cut_mm < 350  # within a column of the break, 250 mm
