@@ -45,11 +45,11 @@ def main(folder: str, patterns: list[str]) -> None:
               f"{analysis.overall_surface(s['failure_points']).phi_deg:.1f} | {'-' if alone is None else f'{alone:.3f}'} | "
               f"{'-' if lines is None else f'{lines[0].phi_deg:.1f} / {lines[1].phi_deg:.1f}'} |")
     print(f"\n{len(runs)} runs pooled: p = {'-' if p is None else f'{p:.4f}'}", end="")
-    lines = [pair for pair in at_cut if pair]
-    if lines:
-        print(f"; common cut {-split[0] * 1e3:.0f} mm from the toe; at it, over {len(lines)} runs, toe φ "
-              f"{spread([toe.phi_deg for toe, _ in lines])}°, upper φ {spread([up.phi_deg for _, up in lines])}°, "
-              f"the toe shallower in {sum(toe.phi_deg < up.phi_deg for toe, up in lines)}")
+    pairs = [pair for pair in at_cut if pair]
+    if pairs:
+        print(f"; common cut {-split[0] * 1e3:.0f} mm from the toe; at it, over {len(pairs)} runs, toe φ "
+              f"{spread([toe.phi_deg for toe, _ in pairs])}°, upper φ {spread([up.phi_deg for _, up in pairs])}°, "
+              f"the toe shallower in {sum(toe.phi_deg < up.phi_deg for toe, up in pairs)}")
     else:
         print()
 
