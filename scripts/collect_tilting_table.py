@@ -23,7 +23,7 @@ import math
 import os
 import statistics
 import sys
-from typing import NamedTuple, Optional, Sequence
+from typing import Iterable, NamedTuple, Optional, Sequence
 
 
 CALIBRATION = ("bond_tensile_strength", "main_joint_friction", "base_joint_friction")  # 0: the thesis' tables
@@ -59,6 +59,24 @@ def load(folder: str, patterns: Sequence[str] = ("*",)) -> dict[str, dict]:
             with open(path) as f:
                 runs[name] = json.load(f)
     return runs
+
+
+def record_table(lines: Iterable[str], heading: str) -> tuple[list[str], list[list[str]]]:
+    """The header cells and the rows' cells of the first Markdown table after the line that
+    starts with ``heading``: the records in docs/tilting_table.md that let a verdict be
+    recomputed on a machine without the runs."""
+    lines = iter(lines)
+    if not any(line.startswith(heading) for line in lines):
+        raise ValueError(f"no line starts with {heading!r}")
+    cells = lambda line: [cell.strip() for cell in line.strip().strip("|").split("|")]  # noqa: E731
+    header = cells(next(line for line in lines if line.startswith("|")))
+    next(lines)  # the header's rule
+    rows = []
+    for line in lines:
+        if not line.startswith("|"):
+            break
+        rows.append(cells(line))
+    return header, rows
 
 
 def model_key(inputs: dict, drawn_by: Sequence[str] = SEED) -> tuple[tuple[str, object], ...]:

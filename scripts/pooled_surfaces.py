@@ -3,22 +3,34 @@ alone has about ten failure points, too few to show a break of 10 deg against ce
 scatter; the same break in every run adds up (toppling.analysis.pooled_split_p_value).
 
     source scripts/env.sh; /usr/bin/python3 scripts/pooled_surfaces.py results/tilting_table 'pattern' [...]
+    source scripts/env.sh; /usr/bin/python3 scripts/pooled_surfaces.py --record [docs/tilting_table.md]
 
-Takes the runs whose out folder matches a shell-style pattern and has failure points. Prints
-each run's failure tilt, points, overall phi, split_p_value and its toe and upper phi at the
-common cut (a run with fewer than three points on a side: '-'), then the pooled p, the common
-cut (its distance from the toe), the mean ± standard deviation of those toe and upper phi and
-in how many runs the toe line is the shallower (the thesis' random model: 14 deg at the toe,
-24 above). The test is two-sided: bends either way add up.
+Takes the runs whose out folder matches a shell-style pattern and has failure points, or, with
+``--record``, the random model's draws in the record of docs/tilting_table.md (the table after
+RECORD_HEADING), so that the verdict over all draws can be recomputed on a machine that has
+none of the runs. Prints each run's failure tilt, points, overall phi, split_p_value and its toe
+and upper phi at the common cut (a run with fewer than three points on a side: '-'), then the
+pooled p, the common cut (its distance from the toe), the mean ± standard deviation of those toe
+and upper phi and in how many runs the toe line is the shallower, and the verdict of the rule
+for the thesis' two surfaces (``two_surfaces_verdict``). The test is two-sided: bends either way
+add up.
 """
 import os
+import re
 import statistics
 import sys
+from typing import Iterable, Optional
 
 from toppling import analysis
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import collect_tilting_table as collect  # noqa: E402
+
+RECORD_HEADING = "**Every random draw's failure points.**"
+RECORD = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "docs", "tilting_table.md")
+POINT = re.compile(r"(-?\d+(?:\.\d+)?)\s*:\s*(-?\d+(?:\.\d+)?)")  # "29:8": mm from the toe : mm high
+THESIS_PHI_DEG = (14.0, 24.0)  # thesis §5.2.4 (Fig 5-11): the random model's toe and upper surfaces
+SPLIT_LEVEL = 0.05
 
 
 def load(folder: str, patterns: list[str]) -> dict[str, dict]:
@@ -26,14 +38,42 @@ def load(folder: str, patterns: list[str]) -> dict[str, dict]:
     return {name: s for name, s in collect.load(folder, patterns).items() if s.get("failure_points")}
 
 
+def read_record(lines: Iterable[str]) -> dict[str, dict]:
+    """Runs by name ("line N: <draw>") with ``failure_tilt_deg`` (the cell's text) and
+    ``failure_points`` (slope frame, m: x negative into the slope) from the record's columns
+    line, draw, failure tilt and failure points."""
+    _, rows = collect.record_table(lines, RECORD_HEADING)
+    runs = {}
+    for line, draw, tilt, points in (row[:4] for row in rows):
+        runs[f"line {line}: {draw}"] = {
+            "failure_tilt_deg": tilt,
+            "failure_points": [[-float(x) * 1e-3, float(y) * 1e-3] for x, y in POINT.findall(points)]}
+    return runs
+
+
 def spread(values: list[float]) -> str:
     return f"{statistics.mean(values):.1f} ± {statistics.stdev(values):.1f}" if len(values) > 1 else f"{values[0]:.1f}"
 
 
-def main(folder: str, patterns: list[str]) -> None:
-    runs = load(folder, patterns)
-    if not runs:
-        sys.exit(f"no summary.json with failure points under {folder} matches {patterns}")
+def two_surfaces_verdict(p: Optional[float], pairs: list) -> str:
+    """The rule set down before the random draws were rerun (docs/tilting_table.md, "Packings 5
+    and 6 of the random model rerun"): "met" when the pooled p is below SPLIT_LEVEL and the mean
+    toe and upper phi at the common cut are each within the issue's 3 deg of the thesis' by two
+    standard errors; "not met" when p is not below it or a mean is outside by two standard
+    errors; "undecided" otherwise (also with fewer than three runs split at the cut)."""
+    if p is not None and p >= SPLIT_LEVEL:
+        return f"not met (p ≥ {SPLIT_LEVEL:g})"
+    if p is None or len(pairs) < 3:
+        return "undecided (too few runs split at the common cut)"
+    verdicts = []
+    for side, thesis in enumerate(THESIS_PHI_DEG):
+        phi = [pair[side].phi_deg for pair in pairs]
+        se = statistics.stdev(phi) / len(phi) ** 0.5
+        verdicts.append(collect.within(statistics.mean(phi) - thesis, se, collect.TARGET_TOLERANCE_DEG))
+    return "met" if verdicts == ["yes", "yes"] else "not met" if "no" in verdicts else "undecided"
+
+
+def main(runs: dict[str, dict]) -> None:
     points = [s["failure_points"] for s in runs.values()]
     p, split = analysis.pooled_split_p_value(points), analysis.pooled_split(points)
     at_cut = split[1] if split else [None] * len(runs)
@@ -52,9 +92,25 @@ def main(folder: str, patterns: list[str]) -> None:
               f"the toe shallower in {sum(toe.phi_deg < up.phi_deg for toe, up in pairs)}")
     else:
         print()
+    print(f"the thesis' two surfaces ({THESIS_PHI_DEG[0]:g}° under {THESIS_PHI_DEG[1]:g}°): "
+          f"{two_surfaces_verdict(p, pairs)}")
+
+
+def runs_from(argv: list[str]) -> dict[str, dict]:
+    """The runs the command line names (module docstring); exits with a message when there are none."""
+    if argv[:1] == ["--record"]:
+        path = argv[1] if len(argv) > 1 else RECORD
+        with open(path) as f:
+            runs = read_record(f)
+        where = f"the record in {path}"
+    else:
+        runs, where = load(argv[0], argv[1:]), f"summary.json with failure points under {argv[0]} matching {argv[1:]}"
+    if not runs:
+        sys.exit(f"no runs: {where} has none")
+    return runs
 
 
 if __name__ == "__main__":
-    if len(sys.argv) < 3:
+    if len(sys.argv) < 3 and sys.argv[1:2] != ["--record"]:
         sys.exit(__doc__)
-    main(sys.argv[1], sys.argv[2:])
+    main(runs_from(sys.argv[1:]))

@@ -27,17 +27,11 @@ TILT_CELL = re.compile(r"\s*(\d+(?:\.\d+)?)\s*\(")  # "38 (190)": failure tilt (
 def read_record(lines: Iterable[str]) -> dict[str, list[float]]:
     """Failure tilts by packing size (the column's header up to its colon) from the first
     Markdown table after RECORD_HEADING; a cell without a tilt (a seed not run, "–") is left out."""
-    lines = iter(lines)
-    if not any(line.startswith(RECORD_HEADING) for line in lines):
-        raise ValueError(f"no line starts with {RECORD_HEADING!r}")
-    header = next(line for line in lines if line.startswith("|"))
-    sizes = [cell.split(":")[0].strip() for cell in header.strip().strip("|").split("|")[1:]]
+    header, rows = collect.record_table(lines, RECORD_HEADING)
+    sizes = [cell.split(":")[0].strip() for cell in header[1:]]
     tilts: dict[str, list[float]] = {size: [] for size in sizes}
-    next(lines)  # the header's rule
-    for line in lines:
-        if not line.startswith("|"):
-            break
-        for size, cell in zip(sizes, line.strip().strip("|").split("|")[1:]):
+    for row in rows:
+        for size, cell in zip(sizes, row[1:]):
             match = TILT_CELL.match(cell)
             if match:
                 tilts[size].append(float(match.group(1)))

@@ -1,5 +1,5 @@
-"""scripts/pooled_surfaces.py on made-up summaries: six runs on two surfaces that each alone
-falls short of showing."""
+"""scripts/pooled_surfaces.py on made-up summaries (six runs on two surfaces that each alone
+falls short of showing), on a made-up and the committed record, and the rule's verdict."""
 import json
 import math
 import os
@@ -8,6 +8,7 @@ import re
 import numpy as np
 import pytest
 from conftest import load_script
+from toppling import analysis
 
 pooled = load_script("pooled_surfaces")
 
@@ -26,13 +27,59 @@ def write_runs(folder, n: int = 6) -> None:
 
 def test_the_runs_of_a_pattern_are_pooled_and_the_cut_found(tmp_path, capsys):
     write_runs(tmp_path)
-    pooled.main(str(tmp_path), ["random_*", "stood"])
+    pooled.main(pooled.runs_from([str(tmp_path), "random_*", "stood"]))
     out = capsys.readouterr().out.splitlines()
     rows = [line for line in out if line.startswith("| random_")]
     assert len(rows) == 6
     at_cut = [[float(v) for v in row.split("|")[-2].split("/")] for row in rows]
     assert np.mean(at_cut, axis=0) == pytest.approx([14, 24], abs=3)  # each run's lines at the common cut
-    assert out[-1].startswith("6 runs pooled: p = 0.00")
-    cut_mm = float(re.search(r"common cut (\d+) mm from the toe", out[-1]).group(1))
+    assert out[-2].startswith("6 runs pooled: p = 0.00")
+    cut_mm = float(re.search(r"common cut (\d+) mm from the toe", out[-2]).group(1))
     assert 150 < cut_mm < 350  # within a column of the break, 250 mm
-    assert out[-1].endswith("the toe shallower in 6")
+    assert out[-2].endswith("the toe shallower in 6")
+
+
+MADE_UP_RECORD = """Text.
+
+**Every random draw's failure points.** Made up:
+
+| line | draw | failure tilt (°) | failure points (mm from the toe : mm high) |
+|---|---|---|---|
+| 7 | layout 1, packing 2 | ≤ 11 | 29:8, 75.5:25 |
+| 8 | layout 2, packing 1 | 21 | 30:-4 |
+
+After.
+""".splitlines()
+
+
+def test_the_record_gives_each_line_its_points_in_the_slope_frame_in_metres():
+    runs = pooled.read_record(MADE_UP_RECORD)
+    assert list(runs) == ["line 7: layout 1, packing 2", "line 8: layout 2, packing 1"]
+    assert runs["line 7: layout 1, packing 2"]["failure_tilt_deg"] == "≤ 11"
+    assert runs["line 7: layout 1, packing 2"]["failure_points"] == pytest.approx(np.array([[-0.029, 0.008], [-0.0755, 0.025]]))
+    assert runs["line 8: layout 2, packing 1"]["failure_points"] == pytest.approx(np.array([[-0.030, -0.004]]))
+
+
+def test_the_committed_record_names_each_table_line_once_and_every_row_has_points(capsys):
+    runs = pooled.runs_from(["--record"])
+    lines = [name.split(":")[0] for name in runs]
+    assert len(set(lines)) == len(lines) >= 8
+    assert all(s["failure_points"] for s in runs.values())
+    pooled.main(runs)
+    assert capsys.readouterr().out.splitlines()[-1].startswith("the thesis' two surfaces (14° under 24°): ")
+
+
+def pairs_at(toe_phi, upper_phi):
+    """Runs' toe and upper lines at a common cut with these angles."""
+    line = lambda phi: analysis.Plane(phi, -math.tan(math.radians(phi)), 0.0, (-0.5, 0.0))  # noqa: E731
+    return [(line(a), line(b)) for a, b in zip(toe_phi, upper_phi)]
+
+
+def test_the_rule_needs_the_bend_at_5_percent_and_both_means_inside_their_bands():
+    thesis_like = pairs_at([13, 14, 15, 14, 13, 15], [23, 24, 25, 24, 25, 23])
+    assert pooled.two_surfaces_verdict(0.01, thesis_like) == "met"
+    assert pooled.two_surfaces_verdict(0.084, thesis_like).startswith("not met")  # no bend at 5 %
+    assert pooled.two_surfaces_verdict(0.01, pairs_at([24, 25, 23, 24], [8, 9, 7, 8])) == "not met"  # the other way
+    assert pooled.two_surfaces_verdict(0.01, pairs_at([0, 30, 10, 20], [10, 40, 20, 30])) == "undecided"  # too scattered
+    assert pooled.two_surfaces_verdict(0.01, thesis_like[:2]).startswith("undecided")
+    assert pooled.two_surfaces_verdict(None, []).startswith("undecided")

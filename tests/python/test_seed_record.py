@@ -45,9 +45,7 @@ def test_a_file_without_the_record_names_what_is_missing():
 def test_the_committed_record_lists_seeds_1_to_n_with_a_coarse_tilt_for_each():
     with open(os.path.join(REPO, "docs", "tilting_table.md")) as f:
         lines = f.read().splitlines()
-    start = next(i for i, line in enumerate(lines) if line.startswith(record.RECORD_HEADING))
-    table = next(i for i in range(start, len(lines)) if lines[i].startswith("|"))
-    end = next(i for i in range(table, len(lines)) if not lines[i].startswith("|"))
-    seeds = [int(line.split("|")[1]) for line in lines[table + 2:end]]
+    _, rows = record.collect.record_table(lines, record.RECORD_HEADING)
+    seeds = [int(row[0]) for row in rows]
     assert seeds == list(range(1, len(seeds) + 1))
     assert len(record.read_record(lines)["R 1–4 mm"]) == len(seeds)
