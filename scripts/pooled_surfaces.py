@@ -92,7 +92,7 @@ def main(runs: dict[str, dict]) -> None:
               f"the toe shallower in {sum(toe.phi_deg < up.phi_deg for toe, up in pairs)}")
     else:
         print()
-    print(f"the thesis' two surfaces ({THESIS_PHI_DEG[0]:g}° under {THESIS_PHI_DEG[1]:g}°): "
+    print(f"the thesis' two surfaces ({THESIS_PHI_DEG[0]:g}° under {THESIS_PHI_DEG[1]:g}°) over these {len(runs)} runs: "
           f"{two_surfaces_verdict(p, pairs)}")
 
 

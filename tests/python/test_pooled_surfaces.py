@@ -66,7 +66,7 @@ def test_the_committed_record_names_each_table_line_once_and_every_row_has_point
     assert len(set(lines)) == len(lines) >= 8
     assert all(s["failure_points"] for s in runs.values())
     pooled.main(runs)
-    assert capsys.readouterr().out.splitlines()[-1].startswith("the thesis' two surfaces (14° under 24°): ")
+    assert capsys.readouterr().out.splitlines()[-1].startswith(f"the thesis' two surfaces (14° under 24°) over these {len(runs)} runs: ")
 
 
 def pairs_at(toe_phi, upper_phi):
