@@ -183,9 +183,14 @@ def _split_p(sse1: float, sse2: float, x: np.ndarray, draws: int) -> float:
 
 
 def _cuts(xs: Sequence[np.ndarray]) -> np.ndarray:
-    """The cuts common to runs at ``xs``: midway between successive distinct x of their points."""
+    """The cuts common to runs at ``xs``: midway between successive columns. A run has one
+    failure point per column, at an x that varies by millimetres from run to run, so the runs'
+    x closer than half their median spacing are one column: a cut never parts the runs' points
+    of one column, and rounding the points to the millimetre does not move it."""
     pooled = np.unique(np.concatenate(xs))
-    return (pooled[1:] + pooled[:-1]) / 2
+    spacing = np.median(np.concatenate([np.diff(np.unique(x)) for x in xs]))
+    k = np.flatnonzero(np.diff(pooled) > spacing / 2)
+    return (pooled[k] + pooled[k + 1]) / 2
 
 
 def _pooled_split_ratios(xs: Sequence[np.ndarray], ys: Sequence[np.ndarray]) -> np.ndarray:
