@@ -68,15 +68,18 @@ def record_table(lines: Iterable[str], heading: str) -> tuple[list[str], list[li
     lines = iter(lines)
     if not any(line.startswith(heading) for line in lines):
         raise ValueError(f"no line starts with {heading!r}")
-    cells = lambda line: [cell.strip() for cell in line.strip().strip("|").split("|")]  # noqa: E731
-    header = cells(next(line for line in lines if line.startswith("|")))
+    header = table_cells(next(line for line in lines if line.startswith("|")))
     next(lines)  # the header's rule
     rows = []
     for line in lines:
         if not line.startswith("|"):
             break
-        rows.append(cells(line))
+        rows.append(table_cells(line))
     return header, rows
+
+
+def table_cells(line: str) -> list[str]:
+    return [cell.strip() for cell in line.strip().strip("|").split("|")]
 
 
 def model_key(inputs: dict, drawn_by: Sequence[str] = SEED) -> tuple[tuple[str, object], ...]:
