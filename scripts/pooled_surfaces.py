@@ -60,17 +60,20 @@ def two_surfaces_verdict(p: Optional[float], pairs: list) -> str:
     and 6 of the random model rerun"): "met" when the pooled p is below SPLIT_LEVEL and the mean
     toe and upper phi at the common cut are each within the issue's 3 deg of the thesis' by two
     standard errors; "not met" when p is not below it or a mean is outside by two standard
-    errors; "undecided" otherwise (also with fewer than three runs split at the cut)."""
+    errors; "undecided" otherwise (also with fewer than three runs split at the cut). Each mean's
+    difference from the thesis, its standard error and its side's verdict follow in brackets."""
     if p is not None and p >= SPLIT_LEVEL:
         return f"not met (p ≥ {SPLIT_LEVEL:g})"
     if p is None or len(pairs) < 3:
         return "undecided (too few runs split at the common cut)"
-    verdicts = []
-    for side, thesis in enumerate(THESIS_PHI_DEG):
+    sides = []
+    for side, (name, thesis) in enumerate(zip(("toe", "upper"), THESIS_PHI_DEG)):
         phi = [pair[side].phi_deg for pair in pairs]
-        se = statistics.stdev(phi) / len(phi) ** 0.5
-        verdicts.append(collect.within(statistics.mean(phi) - thesis, se, collect.TARGET_TOLERANCE_DEG))
-    return "met" if verdicts == ["yes", "yes"] else "not met" if "no" in verdicts else "undecided"
+        d, se = statistics.mean(phi) - thesis, statistics.stdev(phi) / len(phi) ** 0.5
+        sides.append((name, d, se, collect.within(d, se, collect.TARGET_TOLERANCE_DEG)))
+    verdicts = [side[3] for side in sides]
+    verdict = "met" if verdicts == ["yes", "yes"] else "not met" if "no" in verdicts else "undecided"
+    return f"{verdict} ({'; '.join(f'{name} mean − thesis {d:+.1f} ± {se:.1f}° (SE): {v}' for name, d, se, v in sides)})"
 
 
 def main(runs: dict[str, dict]) -> None:
