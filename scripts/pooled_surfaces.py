@@ -73,7 +73,8 @@ def two_surfaces_verdict(p: Optional[float], pairs: list) -> str:
         sides.append((name, d, se, collect.within(d, se, collect.TARGET_TOLERANCE_DEG)))
     verdicts = [side[3] for side in sides]
     verdict = "met" if verdicts == ["yes", "yes"] else "not met" if "no" in verdicts else "undecided"
-    return f"{verdict} ({'; '.join(f'{name} mean − thesis {d:+.1f} ± {se:.1f}° (SE): {v}' for name, d, se, v in sides)})"
+    margins = "; ".join(f"{name} mean − thesis {d:+.1f} ± {se:.1f}° (SE): {v}" for name, d, se, v in sides)
+    return f"{verdict} ({margins})"
 
 
 def main(runs: dict[str, dict]) -> None:
