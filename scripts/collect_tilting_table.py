@@ -344,11 +344,16 @@ def within(d: float, se: float, tolerance: float) -> str:
     return "yes" if abs(d) + 2 * se <= tolerance else "no" if abs(d) - 2 * se > tolerance else "undecided"
 
 
+def difference_from(values: list[float], target: float) -> tuple[float, float]:
+    """The mean of two or more ``values`` minus ``target``, and the mean's standard error."""
+    return statistics.mean(values) - target, statistics.stdev(values) / len(values) ** 0.5
+
+
 def mean_against(values: list[float], target: float) -> str:
     """The mean of two or more ``values`` minus ``target``, its standard error, and whether the
     mean is within the issue's tolerance of the target (``within``); undecided from two values,
     whose standard deviation says little (two tilts in the same 2° stage give 0)."""
-    d, se = statistics.mean(values) - target, statistics.stdev(values) / len(values) ** 0.5
+    d, se = difference_from(values, target)
     verdict = within(d, se, TARGET_TOLERANCE_DEG) if len(values) > 2 else "undecided (2 draws)"
     return f"{d:+.1f} ± {se:.1f}: {verdict}"
 

@@ -68,8 +68,7 @@ def two_surfaces_verdict(p: Optional[float], pairs: list) -> str:
         return "undecided (too few runs split at the common cut)"
     sides = []
     for side, (name, thesis) in enumerate(zip(("toe", "upper"), THESIS_PHI_DEG)):
-        phi = [pair[side].phi_deg for pair in pairs]
-        d, se = statistics.mean(phi) - thesis, statistics.stdev(phi) / len(phi) ** 0.5
+        d, se = collect.difference_from([pair[side].phi_deg for pair in pairs], thesis)
         sides.append((name, d, se, collect.within(d, se, collect.TARGET_TOLERANCE_DEG)))
     verdicts = [side[3] for side in sides]
     verdict = "met" if verdicts == ["yes", "yes"] else "not met" if "no" in verdicts else "undecided"
