@@ -247,12 +247,20 @@ class TiltRun:
         failure = self.analyse(stage["tilt"])  # before the next stage moves the reference
         stage["phi_deg"] = [plane.phi_deg for plane in failure["planes"]]
         stage["s_over_h"], stage["t_over_h"] = failure["s_over_h"], failure["t_over_h"]
-        self.watched[:] = [group for group in kept if group]
-        self.watched_columns[:] = [label for label, group in zip(self.watched_columns, kept) if group]
+        self.watch([bool(group) for group in kept], kept)
+
+    def watch(self, keep: list[bool], groups: Optional[list] = None) -> None:
+        """Judge later stages on the watched columns that ``keep`` marks (each as ``groups``
+        has it, by default as it is); the checkpoint keeps the choice."""
+        groups = self.watched if groups is None else groups
+        self.watched[:] = [group for group, k in zip(groups, keep) if k]
+        self.watched_columns[:] = [label for label, k in zip(self.watched_columns, keep) if k]
         self.state["watched_columns"] = self.watched_columns
 
     def judge_stage(self, phase: dict) -> dict:
-        """Run the stage of ``phase`` to its outcome and record it."""
+        """Run the stage of ``phase`` to its outcome and record it. A stage that stands watches
+        no more the columns that toppled off alone in it: they are no longer the slope's, and
+        counted again with one more column they would fail a later stage the slope stands."""
         state = self.state
         outcome = self.run_stage(state["tilt"], phase)
         now, reference = tilting.centroids(self.watched), np.array(phase["reference"])
@@ -266,6 +274,8 @@ class TiltRun:
             stage["failed_by"] = "fail_displacement" if self.criteria.collapsed(off) else "max_stage_time"
         state["stages"].append(stage)
         print(stage_line(stage), flush=True)
+        if outcome == "equilibrium":
+            self.watch(list(~off))
         self.series.snapshot()
         return stage
 

@@ -1,5 +1,6 @@
 """toppling.tilt_run: the staged tilt of a block on a joint fails at the first stage past the
 joint's friction angle, also when the run stops at a stage and continues from its checkpoint."""
+import dataclasses
 import json
 import math
 import re
@@ -182,6 +183,25 @@ def test_breaks_that_only_freed_loose_discs_warn_of_nothing():
     assert "0 bonds of the rock broke on the level table and 1 on the ramp" in \
         tilt_run.ramp_warning({"level": 1, "ramp": 2, "loose": {"level": 1, "ramp": 1}})
     assert "2 on the ramp" in tilt_run.ramp_warning({"level": 0, "ramp": 2})
+
+
+def test_a_column_that_toppled_off_alone_does_not_fail_a_later_stage_with_another(empty_scene, tmp_path):
+    """fail_columns 2: a disc falling in the void from the first stage on (a column gone off the
+    table, its pieces still moving) and the block sliding off at 25 deg each go alone, the fixed
+    base stays; counted again, the falling disc would fail the 25 deg stage with the block (as in
+    table line 288's first run)."""
+    setup = incline.build(0.1, 0.05, RMIN, RMAX, ROCK, FRICTION_DEG)
+    faller = O.bodies.append(scene.disc((-1.0, 1.0), RMIN, O.bodies[setup.block[0]].material))
+    layout = columns.ColumnLayout(toe_x=0.15, width=0.1, heights=[0.05])
+    state = tilt_run.fresh_state({"case": "block"}, layout, setup.block + setup.base + [faller],
+                                 {"A-1": setup.block, "B-2": [faller], "C-3": setup.base}, 17.0)
+    run = tilt_run.TiltRun(protocol(step=4.0, max_tilt=25.0), dataclasses.replace(CRITERIA, fail_columns=2),
+                           monitor.Checkpoint(str(tmp_path)), state, monitor.MonitoringPoints(["A-1"], [setup.toe]),
+                           Series(), RMIN, RMAX)
+    assert run.run() is None
+    assert [(s["tilt"], s["outcome"], s["gone"]) for s in run.state["stages"]] == [
+        (17.0, "equilibrium", ["B-2"]), (21.0, "equilibrium", []), (25.0, "equilibrium", ["A-1"])]
+    assert run.watched_columns == ["C-3"] and run.state["watched_columns"] == ["C-3"]
 
 
 @pytest.mark.parametrize("name, value, valid", [("checkpoint_every", 0.0, "> 0 (wall seconds)"),
