@@ -247,13 +247,12 @@ class TiltRun:
         failure = self.analyse(stage["tilt"])  # before the next stage moves the reference
         stage["phi_deg"] = [plane.phi_deg for plane in failure["planes"]]
         stage["s_over_h"], stage["t_over_h"] = failure["s_over_h"], failure["t_over_h"]
-        self.watch([bool(group) for group in kept], kept)
+        self.watched[:] = kept
+        self.watch([bool(group) for group in kept])
 
-    def watch(self, keep: list[bool], groups: Optional[list] = None) -> None:
-        """Judge later stages on the watched columns that ``keep`` marks (each as ``groups``
-        has it, by default as it is); the checkpoint keeps the choice."""
-        groups = self.watched if groups is None else groups
-        self.watched[:] = [group for group, k in zip(groups, keep) if k]
+    def watch(self, keep: list[bool]) -> None:
+        """Judge later stages on the watched columns that ``keep`` marks; the checkpoint keeps the choice."""
+        self.watched[:] = [group for group, k in zip(self.watched, keep) if k]
         self.watched_columns[:] = [label for label, k in zip(self.watched_columns, keep) if k]
         self.state["watched_columns"] = self.watched_columns
 
