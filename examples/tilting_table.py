@@ -81,8 +81,9 @@ the rock (not counting bonds that held a loose disc), a warning names the tilt o
 a rerun with `start_tilt` below it judges those tilts in stages. Each stage runs in chunks of
 `chunk` seconds until
 
-* equilibrium: the fastest column top (the centroid of the bonded discs within 2 Rmax of the
-  top: a loose disc rattling is not a column moving) moves slower than `rest_speed`, or
+* equilibrium: the fastest column top (the median position of the bonded discs within 2 Rmax
+  of the top: a loose disc rattling, or a corner that breaks off, is not a column moving)
+  moves slower than `rest_speed`, or
 * failure: a column top still moves faster than `rest_speed` after `max_stage_time` and has
   moved further than `rest_speed` times the stage's time (less is a column ringing in place), or
   `fail_columns` column tops have moved more than `fail_displacement` (one column width: toppled
@@ -269,8 +270,8 @@ def column_members(layout: columns.ColumnLayout) -> dict[int, list]:
 
 def column_top_bands(members: dict[int, list], depth: float) -> dict[str, list[int]]:
     """The rock discs (>= 2 intact bonds) within ``depth`` of each column's top, by column
-    label: their centroid is what the stage criteria watch (a loose disc rolling off is not the
-    column moving). A column too small for the discs to bond (the toe column at R 2-8 mm) is not
+    label: their median position is what the stage criteria watch (a loose disc rolling off, or a
+    corner breaking off, is not the column moving). A column too small for the discs to bond (the toe column at R 2-8 mm) is not
     watched."""
     bands = {}
     for k, discs in members.items():

@@ -33,7 +33,7 @@ def largest_bond_tension() -> float:
 
 def top_shift(watched: list, reference: np.ndarray) -> float:
     """The largest downslope (x) displacement of a watched column top since ``reference``."""
-    return float((tilting.centroids(watched) - reference)[:, 0].max())
+    return float((tilting.medians(watched) - reference)[:, 0].max())
 
 
 def main() -> None:
@@ -47,7 +47,7 @@ def main() -> None:
     watched = list(model["column_top_bands"](model["column_members"](layout), 2 * rmax).values())
     scene.set_local_damping(SETTLE_DAMPING)
     scene.run_steps(int(SETTLE_TIME / O.dt))
-    reference = tilting.centroids(watched)
+    reference = tilting.medians(watched)
     history = []
 
     def record() -> None:

@@ -2,11 +2,12 @@
 
     ./yade -x -n -j1 scripts/stage_speeds.py results/tilting_table/<run>
 
-A stage ends at rest once every watched column's centroid is slower than ``rest_speed``
+A stage ends at rest once every watched column's median position is slower than ``rest_speed``
 (1 mm/s) over a chunk (``toppling.tilting.stage_outcome``). Without local damping a tall column
 can ring about its rest for the whole ``max_stage_time``; this prints, from the run's last
-checkpoint, each watched column's centroid speed and its fastest disc, so the column that keeps
-the stage going is named.
+checkpoint, each watched column's median velocity (its discs' velocities, x and y apart: the
+median position's while the column moves as one) and its fastest disc, so the column that
+keeps the stage going is named.
 """
 import json
 import os
@@ -25,7 +26,7 @@ def main(out: str) -> None:
           f"tilt {state['tilt']:g} deg")
     for label, group in zip(state["watched_columns"], state["watched"]):
         v = np.array([tuple(O.bodies[i].state.vel)[:2] for i in group])
-        print(f"{label:>5} {len(group):3d} discs  centroid {1e3 * np.linalg.norm(v.mean(axis=0)):.2e} mm/s  "
+        print(f"{label:>5} {len(group):3d} discs  median {1e3 * np.linalg.norm(np.median(v, axis=0)):.2e} mm/s  "
               f"fastest disc {1e3 * np.linalg.norm(v, axis=1).max():.2e} mm/s")
 
 

@@ -155,7 +155,7 @@ class TiltRun:
         # older checkpoints lack the labels: the column each watched group stands in when resumed
         self.watched_columns = state.get("watched_columns") or [
             analysis.column_label(layout.column_of(x)) if layout.column_of(x) else "?"
-            for x, _ in tilting.centroids(self.watched)]
+            for x, _ in tilting.medians(self.watched)]
         self.progress = monitor.Progress(energy=lambda: state["energy"][-1][2])  # what on_chunk just recorded
         self.earlier_wall_time = state.get("wall_time", 0.0)  # of the runs this one resumes
         self.last_save = self.progress.wall_time
@@ -230,7 +230,7 @@ class TiltRun:
         """The slope stands (or stands again): its positions are the reference of the next stage's."""
         self.state["reference"] = tilting.positions(self.ids).tolist()
         self.state["tilt"] += self.protocol.step
-        return self.begin("stage", reference=tilting.centroids(self.watched).tolist())
+        return self.begin("stage", reference=tilting.medians(self.watched).tolist())
 
     def collapse(self) -> dict:
         """The last stage's failure is the slope's: run on after it from the moment it failed."""
@@ -262,7 +262,7 @@ class TiltRun:
         counted again with one more column they would fail a later stage the slope stands."""
         state = self.state
         outcome = self.run_stage(state["tilt"], phase)
-        now, reference = tilting.centroids(self.watched), np.array(phase["reference"])
+        now, reference = tilting.medians(self.watched), np.array(phase["reference"])
         off = tilting.gone(now, reference, self.criteria)
         judged = ~off if outcome == "equilibrium" else np.ones_like(off)  # a column gone off the table does not count
         moved = float(np.linalg.norm(now - reference, axis=1)[judged].max(initial=0.0))
@@ -302,7 +302,7 @@ class TiltRun:
             print(stage_line(done), flush=True)
             if "came_to_rest_after_s" in done:
                 print(arrest_line(done, p.arrest_time), flush=True)
-        phase = state.get("phase") or self.begin("level", reference=tilting.centroids(self.watched).tolist())
+        phase = state.get("phase") or self.begin("level", reference=tilting.medians(self.watched).tolist())
         if phase["name"] == "level":
             scene.set_local_damping(p.settle_damping)
             if self.run_stage(0.0, phase) == "failed":
@@ -316,7 +316,7 @@ class TiltRun:
             before = self.count_ramp_breaks(phase["start"])
             if warning := ramp_warning(before):  # said now: the user may stop the run rather than wait for its stages
                 print(warning, flush=True)
-            phase = self.begin("stage", reference=tilting.centroids(self.watched).tolist())
+            phase = self.begin("stage", reference=tilting.medians(self.watched).tolist())
         while state["failure_tilt"] is None and state["tilt"] <= p.max_tilt + 1e-9:
             if phase["name"] == "stage":
                 if self.judge_stage(phase)["outcome"] == "failed":

@@ -98,7 +98,7 @@ def test_stage_ends_in_equilibrium_below_and_fails_above_the_joint_friction(empt
     O.engines[-1].damping = 0.5
     watched = [setup.block]
     criteria = tilting.StageCriteria(chunk=0.02, rest_speed=1e-3, fail_displacement=2e-3, max_stage_time=0.3)
-    assert tilting.run_stage(tilt, watched, tilting.centroids(watched), criteria) == expected
+    assert tilting.run_stage(tilt, watched, tilting.medians(watched), criteria) == expected
 
 
 @pytest.mark.parametrize("fail_columns, expected", [(1, "failed"), (2, "equilibrium")])
@@ -110,9 +110,26 @@ def test_a_lone_group_gone_fails_the_stage_only_if_fail_columns_is_one(empty_sce
     watched = [setup.block, setup.base]
     criteria = tilting.StageCriteria(chunk=0.02, rest_speed=1e-3, fail_displacement=2e-3, max_stage_time=0.3,
                                      fail_columns=fail_columns)
-    reference = tilting.centroids(watched)
+    reference = tilting.medians(watched)
     assert tilting.run_stage(27.0, watched, reference, criteria) == expected
-    assert list(tilting.gone(tilting.centroids(watched), reference, criteria)) == [True, False]
+    assert list(tilting.gone(tilting.medians(watched), reference, criteria)) == [True, False]
+
+
+def test_a_corner_breaking_off_a_column_top_is_not_the_column_gone(empty_scene):
+    """Line 288's 15 deg stage: five of B-2's seventeen top discs broke off and fell off the table
+    while the rest stood; their mean passed fail_displacement as if the column had toppled off."""
+    top = [O.bodies.append(scene.disc((0.01 * k, 0.3), 0.004, ParallelBondMat(**ROCK))) for k in range(5)]
+    criteria = tilting.StageCriteria(fail_displacement=0.05)
+    reference = tilting.medians([top])
+
+    def lower(ids, dy):
+        for i in ids:
+            O.bodies[i].state.pos = O.bodies[i].state.pos - (0, dy, 0)
+
+    lower(top[:2], 0.8)  # their mean drops 0.32 m
+    assert not tilting.gone(tilting.medians([top]), reference, criteria)[0]
+    lower(top[2:], 0.06)  # the rest of the top goes too
+    assert tilting.gone(tilting.medians([top]), reference, criteria)[0]
 
 
 def _along_slope_response(load) -> tuple[float, float]:
@@ -181,7 +198,7 @@ def test_resumed_ramp_and_stage_continue_from_their_start(empty_scene):
     criteria = tilting.StageCriteria(chunk=0.01, rest_speed=1e-3, fail_displacement=1.0, max_stage_time=0.3)
     resumed_at = O.time
     watched = [setup.block]
-    began_at = tilting.centroids(watched) - [0.01, 0.0]  # the block slid 1 cm since the stage began
+    began_at = tilting.medians(watched) - [0.01, 0.0]  # the block slid 1 cm since the stage began
     assert tilting.run_stage(27.0, watched, began_at, criteria, start=O.time - 0.3) == "failed"
     assert O.time - resumed_at == pytest.approx(criteria.chunk, rel=0.05)
 
@@ -234,7 +251,7 @@ def test_same_command_continues_its_own_checkpoint_and_no_other(empty_scene, tmp
 
 def test_stage_speeds_names_the_column_that_moves_and_a_disc_rattling_inside_a_column_at_rest(
         empty_scene, tmp_path, capsys):
-    """scripts/stage_speeds.py: a column's centroid speed (what the stage judges) beside its fastest disc."""
+    """scripts/stage_speeds.py: a column's median velocity (what the stage judges) beside its fastest disc."""
     ids = [O.bodies.append(scene.disc((0.01 * k, 0.0), 0.004, ParallelBondMat(**ROCK))) for k in range(3)]
     for i, v in zip(ids, [(1e-3, 0, 0), (-1e-3, 0, 0), (0, 2e-3, 0)]):
         O.bodies[i].state.vel = v
@@ -243,8 +260,8 @@ def test_stage_speeds_names_the_column_that_moves_and_a_disc_rattling_inside_a_c
     load_script("stage_speeds").main(str(tmp_path))
     lines = capsys.readouterr().out.splitlines()
     assert "phase stage since t = 0.0000 s, tilt 22 deg" in lines[0]
-    assert "A-1   2 discs  centroid 0.00e+00 mm/s  fastest disc 1.00e+00 mm/s" in lines[1]
-    assert "B-2   1 discs  centroid 2.00e+00 mm/s  fastest disc 2.00e+00 mm/s" in lines[2]
+    assert "A-1   2 discs  median 0.00e+00 mm/s  fastest disc 1.00e+00 mm/s" in lines[1]
+    assert "B-2   1 discs  median 2.00e+00 mm/s  fastest disc 2.00e+00 mm/s" in lines[2]
 
 
 def test_missing_checkpoint_says_what_to_do(tmp_path):
