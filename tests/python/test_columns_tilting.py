@@ -8,7 +8,7 @@ from yade import O, utils
 from yade.wrapper import ParallelBondMat
 
 from conftest import ROCK, load_script
-from toppling import analysis, columns, incline, monitor, scene, tilting
+from toppling import analysis, columns, incline, monitor, paraview, scene, tilting
 
 
 
@@ -118,18 +118,23 @@ def test_a_lone_group_gone_fails_the_stage_only_if_fail_columns_is_one(empty_sce
 def test_a_corner_breaking_off_a_column_top_is_not_the_column_gone(empty_scene):
     """Line 288's 15 deg stage: five of B-2's seventeen top discs broke off and fell off the table
     while the rest stood; their mean passed fail_displacement as if the column had toppled off."""
-    top = [O.bodies.append(scene.disc((0.01 * k, 0.3), 0.004, ParallelBondMat(**ROCK))) for k in range(5)]
+    top = _column_top(0.0, 5)
     criteria = tilting.StageCriteria(fail_displacement=0.05)
     reference = tilting.medians([top])
-
-    def lower(ids, dy):
-        for i in ids:
-            O.bodies[i].state.pos = O.bodies[i].state.pos - (0, dy, 0)
-
-    lower(top[:2], 0.8)  # their mean drops 0.32 m
+    _lower(top[:2], 0.8)  # their mean drops 0.32 m
     assert not tilting.gone(tilting.medians([top]), reference, criteria)[0]
-    lower(top[2:], 0.06)  # the rest of the top goes too
+    _lower(top[2:], 0.06)  # the rest of the top goes too
     assert tilting.gone(tilting.medians([top]), reference, criteria)[0]
+
+
+def _column_top(x: float, count: int) -> list[int]:
+    """``count`` rock discs in a row from ``x``, 0.3 m up: a column's top band."""
+    return [O.bodies.append(scene.disc((x + 0.01 * k, 0.3), 0.004, ParallelBondMat(**ROCK))) for k in range(count)]
+
+
+def _lower(ids: list[int], dy: float) -> None:
+    for i in ids:
+        O.bodies[i].state.pos = O.bodies[i].state.pos - (0, dy, 0)
 
 
 def _along_slope_response(load) -> tuple[float, float]:
@@ -262,6 +267,30 @@ def test_stage_speeds_names_the_column_that_moves_and_a_disc_rattling_inside_a_c
     assert "phase stage since t = 0.0000 s, tilt 22 deg" in lines[0]
     assert "A-1   2 discs  median 0.00e+00 mm/s  fastest disc 1.00e+00 mm/s" in lines[1]
     assert "B-2   1 discs  median 2.00e+00 mm/s  fastest disc 2.00e+00 mm/s" in lines[2]
+
+
+def test_gone_columns_tells_a_corner_falling_off_from_a_column_top_toppling(empty_scene, tmp_path):
+    """scripts/gone_columns.py on a stage where A-1's whole top moved 60 mm and two of B-2's five
+    top discs fell 0.8 m: both means pass 50 mm, only A-1's median does, so the medians alone
+    (fail_columns 2) do not fail the stage."""
+    tops = [_column_top(0.0, 5), _column_top(0.1, 5)]
+    O.engines = scene.engines(gravity=(0, 0, 0), timestepper=False)
+    series = paraview.ParaViewSeries(str(tmp_path / "paraview"))
+    series.snapshot()  # the last stage that stood
+    O.dt = 0.01
+    O.step()
+    _lower(tops[0], 0.06)
+    _lower(tops[1][:2], 0.8)
+    series.snapshot()  # the failure
+    monitor.Checkpoint(str(tmp_path)).save({
+        "inputs": {"fail_displacement": 0.05, "fail_columns": 2}, "series": series.state(),
+        "watched_columns": ["A-1", "B-2"], "watched": tops,
+        "stages": [{"tilt": 13.0, "outcome": "equilibrium", "time": series.times[0]},
+                   {"tilt": 15.0, "outcome": "failed", "time": series.times[1], "gone": ["A-1", "B-2"]}]})
+    lines = load_script("gone_columns").report(str(tmp_path))
+    assert lines[1] == "  A-1: mean 60.0 mm, median 60.0 mm, 5 of 5 discs past fail_displacement"
+    assert lines[2] == "  B-2: mean 320.0 mm, median 0.0 mm, 2 of 5 discs past fail_displacement"
+    assert lines[3] == "  by the medians: 1 of fail_columns 2 past fail_displacement, the stage does not fail then"
 
 
 def test_missing_checkpoint_says_what_to_do(tmp_path):
