@@ -270,9 +270,9 @@ def column_members(layout: columns.ColumnLayout) -> dict[int, list]:
 
 def column_top_bands(members: dict[int, list], depth: float) -> dict[str, list[int]]:
     """The rock discs (>= 2 intact bonds) within ``depth`` of each column's top, by column
-    label: their median position is what the stage criteria watch (a loose disc rolling off, or a
-    corner breaking off, is not the column moving). A column too small for the discs to bond (the toe column at R 2-8 mm) is not
-    watched."""
+    label: their median position is what the stage criteria watch (a loose disc rolling off, or
+    a corner breaking off, is not the column moving). A column too small for the discs to bond
+    (the toe column at R 2-8 mm) is not watched."""
     bands = {}
     for k, discs in members.items():
         rock = bonding.rock([b.id for b in discs])

@@ -98,8 +98,9 @@ def ramp(from_deg: float, to_deg: float, duration: float, on_chunk: Optional[Cal
 def medians(groups: Sequence[Sequence[int]]) -> np.ndarray:
     """Median position (x and y apart) of each group of discs: where most of the group is. A part
     that breaks off and falls away does not move it, where it drags a mean along: five of a
-    column top's seventeen discs falling 0.8 m off the table move the top's mean 0.24 m, as if
-    the column had toppled off (docs/tilting_table.md, "A column top's corner falling off")."""
+    column top's seventeen discs falling off the table moved the top's mean 56 mm while the rest
+    stood, as if the column had toppled off (docs/tilting_table.md, "A column top's corner
+    falling off")."""
     return np.array([np.median(positions(group), axis=0) for group in groups])
 
 
@@ -160,8 +161,8 @@ def run_stage(alpha_deg: float, watched: Sequence[Sequence[int]], reference: np.
               on_chunk: Optional[Callable[[], None]] = None, start: Optional[float] = None) -> str:
     """Tilt to ``alpha_deg`` and run until ``'equilibrium'`` or ``'failed'`` (see
     StageCriteria), judged on the medians of the ``watched`` groups of discs (one loose disc
-    rattling, or a corner breaking off, must not count as a column moving) against their ``reference`` positions:
-    failed when ``fail_columns`` groups have moved more than ``fail_displacement``, or when the
+    rattling, or a corner breaking off, must not count as a column moving) against their
+    ``reference`` positions: failed when ``fail_columns`` groups have moved more than ``fail_displacement``, or when the
     others still move faster than ``rest_speed`` after ``max_stage_time`` and have moved
     further than ``rest_speed`` times the stage's time (stage_outcome).
     ``start``: the simulated time the stage began (now by default; a resumed run passes the
