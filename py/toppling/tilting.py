@@ -162,9 +162,10 @@ def run_stage(alpha_deg: float, watched: Sequence[Sequence[int]], reference: np.
     """Tilt to ``alpha_deg`` and run until ``'equilibrium'`` or ``'failed'`` (see
     StageCriteria), judged on the medians of the ``watched`` groups of discs (one loose disc
     rattling, or a corner breaking off, must not count as a column moving) against their
-    ``reference`` positions: failed when ``fail_columns`` groups have moved more than ``fail_displacement``, or when the
-    others still move faster than ``rest_speed`` after ``max_stage_time`` and have moved
-    further than ``rest_speed`` times the stage's time (stage_outcome).
+    ``reference`` positions: failed when ``fail_columns`` groups have moved more than
+    ``fail_displacement``, or when the others still move faster than ``rest_speed`` after
+    ``max_stage_time`` and have moved further than ``rest_speed`` times the stage's time
+    (stage_outcome).
     ``start``: the simulated time the stage began (now by default; a resumed run passes the
     checkpointed one, so max_stage_time counts the whole stage)."""
     if criteria.fail_columns > len(watched):
