@@ -28,6 +28,7 @@ def snapshot_positions(path: str) -> np.ndarray:
 
 
 def report(out: str) -> list[str]:
+    """The lines printed for the run folder ``out``."""
     name = os.path.basename(out.rstrip("/"))
     if not os.path.exists(os.path.join(out, "checkpoint.json")):
         return [f"{name}: no checkpoint yet"]
