@@ -10,21 +10,14 @@ A column that toppled off moves with most of its discs; a mean past fail_displac
 median far below it is a part (a corner of the top) that broke off and fell, and the column stood
 (docs/tilting_table.md, "A column top's corner falling off").
 """
-import glob
 import json
 import os
 import sys
 
 import numpy as np
-import vtk
-from vtk.util.numpy_support import vtk_to_numpy
 
-
-def snapshot_positions(path: str) -> np.ndarray:
-    reader = vtk.vtkXMLUnstructuredGridReader()
-    reader.SetFileName(path)
-    reader.Update()
-    return vtk_to_numpy(reader.GetOutput().GetPoints().GetData())[:, :2]
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from onset_failure import at_time, disc_arrays  # noqa: E402
 
 
 def report(out: str) -> list[str]:
@@ -40,8 +33,7 @@ def report(out: str) -> list[str]:
         return [f"{name}: no stage failed"]
     if failed == 0:
         return [f"{name}: failed in its first stage, no snapshot at its start"]
-    times, snapshots = state["series"]["times"], sorted(glob.glob(os.path.join(out, "paraview", "discs_*.vtu")))
-    start, end = (snapshot_positions(snapshots[times.index(stages[k]["time"])]) for k in (failed - 1, failed))
+    start, end = (disc_arrays(at_time(out, "discs", stages[k]["time"]))[0] for k in (failed - 1, failed))
     index = {i: n for n, i in enumerate(state["series"]["ids"])}
     groups = dict(zip(state["watched_columns"], state["watched"]))  # a gone column stays watched after the failure
     limit, needed = state["inputs"]["fail_displacement"], state["inputs"]["fail_columns"]

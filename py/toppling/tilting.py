@@ -106,8 +106,9 @@ def medians(groups: Sequence[Sequence[int]]) -> np.ndarray:
 
 def stage_outcome(now: np.ndarray, before: np.ndarray, reference: np.ndarray, elapsed: float,
                   criteria: StageCriteria) -> Optional[str]:
-    """The stage's outcome from the watched groups' medians ``now``, one chunk ago (``before``) and at
-    the stage's start (``reference``), ``elapsed`` seconds into it; None while it is undecided.
+    """The stage's outcome from the watched groups' medians ``now``, one chunk ago (``before``)
+    and at the stage's start (``reference``), ``elapsed`` seconds into it; None while it is
+    undecided.
     At the time limit a group still moving but whose mean speed over the stage is below
     rest_speed vibrates in place (without local damping a column can ring for seconds): that is
     equilibrium, not creep."""
