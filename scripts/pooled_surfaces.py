@@ -10,7 +10,7 @@ Takes the runs whose out folder matches a shell-style pattern and has failure po
 RECORD_HEADING), so that the verdict over all draws can be recomputed on a machine that has
 none of the runs. Prints each run's failure tilt, points, overall phi, split_p_value and its toe
 and upper phi at the common cut (a run with fewer than three points on a side: '-'), then the
-pooled p, the common cut (its distance from the toe), the mean ± standard deviation of those toe
+failure tilt over the runs against the thesis' (``failure_tilt_line``), the pooled p, the common cut (its distance from the toe), the mean ± standard deviation of those toe
 and upper phi and in how many runs the toe line is the shallower, and the verdict of the rule
 for the thesis' two surfaces (``two_surfaces_verdict``). The test is two-sided: bends either way
 add up.
@@ -30,6 +30,8 @@ RECORD_HEADING = "**Every random draw's failure points.**"
 RECORD = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "docs", "tilting_table.md")
 POINT = re.compile(r"(-?\d+(?:\.\d+)?)\s*:\s*(-?\d+(?:\.\d+)?)")  # "29:8": mm from the toe : mm high
 THESIS_PHI_DEG = (14.0, 24.0)  # thesis §5.2.4 (Fig 5-11): the random model's toe and upper surfaces
+THESIS_TILT_DEG = 19.0  # thesis §5.2 (Table 5-4): the random model's failure tilt
+UPPER_BOUND = "≤"  # a record's tilt that is only an upper bound: the draw failed in its first stage
 SPLIT_LEVEL = 0.05
 
 
@@ -39,16 +41,42 @@ def load(folder: str, patterns: list[str]) -> dict[str, dict]:
 
 
 def read_record(lines: Iterable[str]) -> dict[str, dict]:
-    """Runs by name ("line N: <draw>") with ``failure_tilt_deg`` (the cell's text) and
-    ``failure_points`` (slope frame, m: x negative into the slope) from the record's columns
-    line, draw, failure tilt and failure points."""
+    """Runs by name ("line N: <draw>") as summaries (``failure_tilt_deg``,
+    ``failed_in_first_stage`` for a tilt marked UPPER_BOUND, the thesis' tilt, and
+    ``failure_points`` in the slope frame, m: x negative into the slope) from the record's
+    columns line, draw, failure tilt and failure points."""
     _, rows = collect.record_table(lines, RECORD_HEADING)
     runs = {}
     for line, draw, tilt, points in (row[:4] for row in rows):
         runs[f"line {line}: {draw}"] = {
-            "failure_tilt_deg": tilt,
+            "failure_tilt_deg": float(tilt.removeprefix(UPPER_BOUND)),
+            "failed_in_first_stage": tilt.startswith(UPPER_BOUND),
+            "thesis": {"failure_tilt_deg": THESIS_TILT_DEG},
             "failure_points": [[-float(x) * 1e-3, float(y) * 1e-3] for x, y in POINT.findall(points)]}
     return runs
+
+
+def tilt_text(s: dict) -> str:
+    tilt = "-" if s["failure_tilt_deg"] is None else f"{s['failure_tilt_deg']:g}"
+    return f"{UPPER_BOUND} {tilt}" if collect.first_stage_failure(s) else tilt
+
+
+def failure_tilt_line(runs: dict[str, dict]) -> str:
+    """The failure tilt over the runs as the collect script's seed sections give it: mean ±
+    standard deviation and range of the runs that failed past their first stage, how many runs
+    failed within the issue's tolerance of the thesis' tilt (an upper bound counts outside), and
+    the mean against the thesis by two standard errors (collect.mean_against)."""
+    group = list(runs.values())
+    tilts = [s["failure_tilt_deg"] for s in collect.failed_seeds(group)]
+    target = group[0]["thesis"]["failure_tilt_deg"]
+    inside = sum(abs(t - target) <= collect.TARGET_TOLERANCE_DEG for t in tilts)
+    bounds = [tilt_text(s) for s in group if collect.first_stage_failure(s)]
+    bounds = f", {', '.join(bounds)} left out" if bounds else ""
+    if len(tilts) < 2:
+        return f"failure tilt: {len(tilts)} of {len(group)} runs failed past their first stage{bounds}"
+    return (f"failure tilt over {len(tilts)} runs: {collect.stats_text(tilts)}° ({min(tilts):g}–{max(tilts):g}°), "
+            f"{inside} of {len(group)} within {collect.TARGET_TOLERANCE_DEG:g}° of the thesis' {target:g}°{bounds}; "
+            f"mean − thesis {collect.mean_against(tilts, target)}")
 
 
 def spread(values: list[float]) -> str:
@@ -84,10 +112,11 @@ def main(runs: dict[str, dict]) -> None:
     print("|---|---|---|---|---|---|")
     for (name, s), lines in zip(runs.items(), at_cut):
         alone = analysis.split_p_value(s["failure_points"])
-        print(f"| {name} | {s['failure_tilt_deg']} | {len(s['failure_points'])} | "
+        print(f"| {name} | {tilt_text(s)} | {len(s['failure_points'])} | "
               f"{analysis.overall_surface(s['failure_points']).phi_deg:.1f} | {'-' if alone is None else f'{alone:.3f}'} | "
               f"{'-' if lines is None else f'{lines[0].phi_deg:.1f} / {lines[1].phi_deg:.1f}'} |")
-    print(f"\n{len(runs)} runs pooled: p = {'-' if p is None else f'{p:.4f}'}", end="")
+    print(f"\n{failure_tilt_line(runs)}")
+    print(f"{len(runs)} runs pooled: p = {'-' if p is None else f'{p:.4f}'}", end="")
     pairs = [pair for pair in at_cut if pair]
     if pairs:
         print(f"; common cut {-split[0] * 1e3:.0f} mm from the toe; at it, over {len(pairs)} runs, toe φ "

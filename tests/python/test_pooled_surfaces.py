@@ -11,6 +11,7 @@ from conftest import load_script
 from toppling import analysis
 
 pooled = load_script("pooled_surfaces")
+THESIS = {"failure_tilt_deg": 19.0}
 
 
 def write_runs(folder, n: int = 6) -> None:
@@ -20,9 +21,9 @@ def write_runs(folder, n: int = 6) -> None:
     for i in range(n):
         os.makedirs(folder / f"random_{i}")
         points = np.c_[x, y + rng.normal(0, 0.01, len(x))].tolist()
-        (folder / f"random_{i}" / "summary.json").write_text(json.dumps({"failure_tilt_deg": 19.0, "failure_points": points}))
+        (folder / f"random_{i}" / "summary.json").write_text(json.dumps({"failure_tilt_deg": 19.0, "thesis": THESIS, "failure_points": points}))
     os.makedirs(folder / "stood")
-    (folder / "stood" / "summary.json").write_text(json.dumps({"failure_tilt_deg": None, "failure_points": []}))
+    (folder / "stood" / "summary.json").write_text(json.dumps({"failure_tilt_deg": None, "thesis": THESIS, "failure_points": []}))
 
 
 def test_the_runs_of_a_pattern_are_pooled_and_the_cut_found(tmp_path, capsys):
@@ -33,6 +34,7 @@ def test_the_runs_of_a_pattern_are_pooled_and_the_cut_found(tmp_path, capsys):
     assert len(rows) == 6
     at_cut = [[float(v) for v in row.split("|")[-2].split("/")] for row in rows]
     assert np.mean(at_cut, axis=0) == pytest.approx([14, 24], abs=3)  # each run's lines at the common cut
+    assert out[-3].startswith("failure tilt over 6 runs: 19.0 ± 0.0° (19–19°), 6 of 6 within 3°")
     assert out[-2].startswith("6 runs pooled: p = 0.00")
     cut_mm = float(re.search(r"common cut (\d+) mm from the toe", out[-2]).group(1))
     assert 150 < cut_mm < 350  # within a column of the break, 250 mm
@@ -55,9 +57,19 @@ After.
 def test_the_record_gives_each_line_its_points_in_the_slope_frame_in_metres():
     runs = pooled.read_record(MADE_UP_RECORD)
     assert list(runs) == ["line 7: layout 1, packing 2", "line 8: layout 2, packing 1"]
-    assert runs["line 7: layout 1, packing 2"]["failure_tilt_deg"] == "≤ 11"
+    assert runs["line 7: layout 1, packing 2"]["failure_tilt_deg"] == 11
+    assert runs["line 7: layout 1, packing 2"]["failed_in_first_stage"]
+    assert not runs["line 8: layout 2, packing 1"]["failed_in_first_stage"]
     assert runs["line 7: layout 1, packing 2"]["failure_points"] == pytest.approx(np.array([[-0.029, 0.008], [-0.0755, 0.025]]))
     assert runs["line 8: layout 2, packing 1"]["failure_points"] == pytest.approx(np.array([[-0.030, -0.004]]))
+
+
+def test_the_failure_tilt_over_the_record_leaves_an_upper_bound_out_of_the_mean_and_counts_it_outside():
+    tilts = ["≤ 11", "15", "21", "23", "19"]  # mean 19.5 ± 3.4 over the four, SE 1.7
+    record = MADE_UP_RECORD[:6] + [f"| {n} | draw {n} | {t} | 30:5 |" for n, t in enumerate(tilts)]
+    line = pooled.failure_tilt_line(pooled.read_record(record))
+    assert line == ("failure tilt over 4 runs: 19.5 ± 3.4° (15–23°), 2 of 5 within 3° of the thesis' 19°, ≤ 11 left "
+                    "out; mean − thesis +0.5 ± 1.7: undecided")
 
 
 def test_the_committed_record_names_each_table_line_once_and_every_row_has_points(capsys):
