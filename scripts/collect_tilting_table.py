@@ -314,7 +314,7 @@ def seed_spread(runs: dict[str, dict], drawn_by: Sequence[str] = SEED) -> list[s
         phis = [phi for phi in map(overall_phi, failed) if phi is not None]
         seeds = ", ".join("/".join(f"{v:g}" for v in draw(s, drawn_by)) for s in group)
         target = group[0]["thesis"]["failure_tilt_deg"]
-        inside = sum(abs(t - target) <= TARGET_TOLERANCE_DEG for t in tilts)
+        inside = inside_band(tilts, target)
         phi_range = f"{stats_text(phis)} ({min(phis):.1f}–{max(phis):.1f})" if phis else "-"
         stood = sum(s["failure_tilt_deg"] is None for s in group)
         bounded = [f"{s['failure_tilt_deg']:g}" for s in group if first_stage_failure(s)]
@@ -336,6 +336,11 @@ def mean_difference(fine: list[float], coarse: list[float]) -> tuple[str, str]:
         return f"{d:+.1f}", f"undecided ({len(fine)} vs {len(coarse)} seeds)"
     se = (statistics.variance(fine) / len(fine) + statistics.variance(coarse) / len(coarse)) ** 0.5
     return f"{d:+.1f} ± {se:.1f}", within(d, se, SIZE_TOLERANCE_DEG)
+
+
+def inside_band(tilts: list[float], target: float) -> int:
+    """How many ``tilts`` are within the issue's tolerance of the thesis' ``target``."""
+    return sum(abs(t - target) <= TARGET_TOLERANCE_DEG for t in tilts)
 
 
 def within(d: float, se: float, tolerance: float) -> str:

@@ -10,10 +10,10 @@ Takes the runs whose out folder matches a shell-style pattern and has failure po
 RECORD_HEADING), so that the verdict over all draws can be recomputed on a machine that has
 none of the runs. Prints each run's failure tilt, points, overall phi, split_p_value and its toe
 and upper phi at the common cut (a run with fewer than three points on a side: '-'), then the
-failure tilt over the runs against the thesis' (``failure_tilt_line``), the pooled p, the common cut (its distance from the toe), the mean ± standard deviation of those toe
-and upper phi and in how many runs the toe line is the shallower, and the verdict of the rule
-for the thesis' two surfaces (``two_surfaces_verdict``). The test is two-sided: bends either way
-add up.
+failure tilt over the runs against the thesis' (``failure_tilt_line``), the pooled p, the common
+cut (its distance from the toe), the mean ± standard deviation of those toe and upper phi and in
+how many runs the toe line is the shallower, and the verdict of the rule for the thesis' two
+surfaces (``two_surfaces_verdict``). The test is two-sided: bends either way add up.
 """
 import os
 import re
@@ -67,9 +67,11 @@ def failure_tilt_line(runs: dict[str, dict]) -> str:
     failed within the issue's tolerance of the thesis' tilt (an upper bound counts outside), and
     the mean against the thesis by two standard errors (collect.mean_against)."""
     group = list(runs.values())
-    tilts = [s["failure_tilt_deg"] for s in collect.failed_seeds(group)]
-    target = group[0]["thesis"]["failure_tilt_deg"]
-    inside = sum(abs(t - target) <= collect.TARGET_TOLERANCE_DEG for t in tilts)
+    targets = {s["thesis"]["failure_tilt_deg"] for s in group}
+    if len(targets) > 1:
+        return f"failure tilt: not pooled, the runs are of models with different thesis' tilts {sorted(targets)}"
+    tilts, target = [s["failure_tilt_deg"] for s in collect.failed_seeds(group)], targets.pop()
+    inside = collect.inside_band(tilts, target)
     bounds = [tilt_text(s) for s in group if collect.first_stage_failure(s)]
     bounds = f", {', '.join(bounds)} left out" if bounds else ""
     if len(tilts) < 2:

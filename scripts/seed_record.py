@@ -49,7 +49,7 @@ def report(tilts: dict[str, list[float]]) -> list[str]:
     rows = [f"| packing | seeds | failure tilt (°) | median | within 3° of {THESIS_TILT_DEG:g}° | "
             f"{collect.MEAN_AGAINST_HEADER} | margin (°) |", "|---|---|---|---|---|---|---|"]
     for size, values in tilts.items():
-        inside = sum(abs(t - THESIS_TILT_DEG) <= collect.TARGET_TOLERANCE_DEG for t in values)
+        inside = collect.inside_band(values, THESIS_TILT_DEG)
         rows.append(f"| {size} | {len(values)} | {collect.stats_text(values)} | {statistics.median(values):g} | "
                     f"{inside} | {collect.mean_against(values, THESIS_TILT_DEG)} | {margin(values):.2f} |")
     coarse_size, coarse = next(iter(tilts.items()))

@@ -72,6 +72,12 @@ def test_the_failure_tilt_over_the_record_leaves_an_upper_bound_out_of_the_mean_
                     "out; mean − thesis +0.5 ± 1.7: undecided")
 
 
+def test_runs_of_models_with_different_thesis_tilts_are_not_pooled_into_one_failure_tilt():
+    runs = pooled.read_record(MADE_UP_RECORD)
+    runs["line 8: layout 2, packing 1"]["thesis"] = {"failure_tilt_deg": 35.0}
+    assert pooled.failure_tilt_line(runs).startswith("failure tilt: not pooled")
+
+
 def test_the_committed_record_names_each_table_line_once_and_every_row_has_points(capsys):
     runs = pooled.runs_from(["--record"])
     lines = [name.split(":")[0] for name in runs]
