@@ -57,7 +57,7 @@ def read_record(lines: Iterable[str]) -> dict[str, dict]:
 
 
 def tilt_text(s: dict) -> str:
-    tilt = "-" if s["failure_tilt_deg"] is None else f"{s['failure_tilt_deg']:g}"
+    tilt = f"{s['failure_tilt_deg']:g}"  # a run with failure points failed at a tilt
     return f"{UPPER_BOUND} {tilt}" if collect.first_stage_failure(s) else tilt
 
 
