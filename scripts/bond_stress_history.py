@@ -2,10 +2,10 @@
 
     python3 scripts/bond_stress_history.py results/tilting_table/ideal_safety08 [30,40,50]
 
-For each snapshot (one per stage end, one after the post-failure run) prints the tilt of the
-stage it ends, the intact and broken bonds, and the three largest bond tensile stresses
-sigma_max and the largest shear stress tau of the intact bonds [kPa]: how close the rock is to
-its first crack, which is what a calibration of the bond strength moves. Given stresses [kPa]
+For each snapshot (one at the start tilt, one per stage end, one after the post-failure run)
+prints the tilt of the stage it ends, the intact and broken bonds, and the three largest bond
+tensile stresses sigma_max and the largest shear stress tau of the intact bonds [kPa]: how
+close the rock is to its first crack, which is what a calibration of the bond strength moves. Given stresses [kPa]
 (comma-separated), also how many intact bonds are above each: a few outliers crack first, but
 a slope fails when many bonds crack.
 """
@@ -42,6 +42,16 @@ def stage_tilts(folder: str) -> list[tuple[float, float]]:
     return [(s["time"], s["tilt"]) for s in run_record(folder).get("stages", [])]
 
 
+def snapshot_label(time: float, stages: list[tuple[float, float]]) -> str:
+    """What the snapshot written at ``time`` shows, given the run's ``stage_tilts``: the tilt of
+    the stage it ends, "start" (the slope at the start tilt, before its first stage ran) or
+    "after failure"."""
+    tilt = next((t for end, t in stages if abs(end - time) < 1e-9), None)
+    if tilt is not None:
+        return f"{tilt:g}"
+    return "start" if stages and time < stages[0][0] else "after failure"
+
+
 def read_grid(path: str):
     reader = vtkXMLUnstructuredGridReader()
     reader.SetFileName(path)
@@ -69,7 +79,7 @@ def main(folder: str, above: Sequence[float] = ()) -> None:
           + "".join(f" σ > {a:g} kPa |" for a in above))
     print("|---|---|---|---|---|---|" + "---|" * len(above))
     for time, path in snapshots(folder):
-        tilt = next((f"{t:g}" for end, t in stages if abs(end - time) < 1e-9), "after failure")
+        tilt = snapshot_label(time, stages)
         bonds = bond_arrays(path)
         intact = bonds["state"] == 1
         stresses = bonds["sigma_max"][intact]

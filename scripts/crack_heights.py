@@ -2,9 +2,9 @@
 
     python3 scripts/crack_heights.py results/tilting_table/ideal_bond65_shrunk_joints001 [20]
 
-For each snapshot of the bonds series (one per stage end) prints the stage's tilt, the bonds
-broken since the previous snapshot, and how many of them, and of the ``top`` (20) most
-stressed intact bonds, are roots (bonds to a disc of the table's fixed layer, centred within
+For each snapshot of the bonds series (one at the start tilt, one per stage end) prints the
+stage's tilt, the bonds broken since the previous snapshot, and how many of them, and of the
+``top`` (20) most stressed intact bonds, are roots (bonds to a disc of the table's fixed layer, centred within
 Rmax of the table as the example fixes them: where the columns are tied to the table) or lie
 in each band of height above the table (y = 0); the ideal model's design plane rises from the
 toe to 80 mm at the seventh column. A slope that topples along a surface through the columns
@@ -17,7 +17,7 @@ import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from bond_stress_history import cell_arrays, read_grid, run_record, snapshots, stage_tilts  # noqa: E402
+from bond_stress_history import cell_arrays, read_grid, run_record, snapshot_label, snapshots, stage_tilts  # noqa: E402
 
 BANDS_MM = (0.0, 20.0, 50.0, 100.0, np.inf)  # heights above the table of the bonds not at a root
 
@@ -44,7 +44,7 @@ def main(folder: str, top: int = 20) -> None:
     print("|---|---|---|---|")
     broken_before = 0
     for time, path in snapshots(folder):
-        tilt = next((f"{t:g}" for end, t in stages if abs(end - time) < 1e-9), "after failure")
+        tilt = snapshot_label(time, stages)
         height, root, bonds = bonds_of_snapshot(path, rmax)
         new = np.flatnonzero(bonds["state"] > 1)[broken_before:]  # the series lists breaks in their order
         intact = np.flatnonzero(bonds["state"] == 1)

@@ -35,6 +35,8 @@ def elastic_peaks(folder: str) -> list[tuple[float, list[float], np.ndarray]]:
     ends = dict(stage_tilts(folder))
     peaks = []
     for time, path in snapshots(folder):
+        if time < min(ends, default=time):  # the slope at the start tilt, still ringing from the ramp
+            continue
         tilt = next((t for end, t in ends.items() if abs(end - time) < 1e-9), None)
         grid = read_grid(path)
         bonds = cell_arrays(grid)

@@ -2,8 +2,8 @@
 
     python3 scripts/gone_columns.py results/tilting_table/<run> [...]
 
-From a run's checkpoint.json and its ParaView snapshots (one after every stage), for the first
-failing stage: per gone column, the mean and the median displacement of its watched top discs
+From a run's checkpoint.json and its ParaView snapshots (one at the start tilt, one after every
+stage), for the first failing stage: per gone column, the mean and the median displacement of its watched top discs
 from the stage's start to the failure, and how many of them moved more than fail_displacement;
 then whether the medians alone fail the stage at that moment (fail_columns past it).
 A column that toppled off moves with most of its discs; a mean past fail_displacement with a
@@ -17,6 +17,7 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from bond_stress_history import snapshots  # noqa: E402
 from onset_failure import at_time, disc_arrays  # noqa: E402
 
 
@@ -31,9 +32,11 @@ def report(out: str) -> list[str]:
     failed = next((k for k, s in enumerate(stages) if s["outcome"] == "failed"), None)
     if failed is None:
         return [f"{name}: no stage failed"]
-    if failed == 0:
+    failed_at = stages[failed]["time"]
+    before = [entry for entry in snapshots(out, "discs") if entry[0] < failed_at]
+    if not before:  # a run older than the snapshot at the start tilt
         return [f"{name}: failed in its first stage, no snapshot at its start"]
-    start, end = (disc_arrays(at_time(out, "discs", stages[k]["time"]))[0] for k in (failed - 1, failed))
+    start, end = disc_arrays(max(before)[1])[0], disc_arrays(at_time(out, "discs", failed_at))[0]
     index = {i: n for n, i in enumerate(state["series"]["ids"])}
     groups = dict(zip(state["watched_columns"], state["watched"]))  # a gone column stays watched after the failure
     limit, needed = state["inputs"]["fail_displacement"], state["inputs"]["fail_columns"]

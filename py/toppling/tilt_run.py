@@ -140,9 +140,10 @@ def arrested_text(arrested: list[dict]) -> str:
 class TiltRun:
     """One run of ``protocol`` on the scene of ``state`` (``fresh_state`` or a checkpoint's),
     stages judged by ``criteria`` on the watched groups; ``points`` are the monitoring points,
-    ``series`` the ParaView series (a snapshot after every stage). ``rmin``, ``rmax``: the
-    packing's radii, which set the analysis' resolution and where the table ends (a disc whose
-    centre fell 2 Rmax below the table has left it)."""
+    ``series`` the ParaView series (a snapshot at the start tilt before the first stage, and
+    after every stage). ``rmin``, ``rmax``: the packing's radii, which set the analysis'
+    resolution and where the table ends (a disc whose centre fell 2 Rmax below the table has
+    left it)."""
 
     def __init__(self, protocol: TiltProtocol, criteria: tilting.StageCriteria, checkpoint: monitor.Checkpoint,
                  state: dict[str, Any], points: monitor.MonitoringPoints, series: paraview.ParaViewSeries,
@@ -316,6 +317,7 @@ class TiltRun:
             before = self.count_ramp_breaks(phase["start"])
             if warning := ramp_warning(before):  # said now: the user may stop the run rather than wait for its stages
                 print(warning, flush=True)
+            self.series.snapshot()  # the slope its first stage starts from: a first-stage failure is seen from it
             phase = self.begin("stage", reference=tilting.medians(self.watched).tolist())
         while state["failure_tilt"] is None and state["tilt"] <= p.max_tilt + 1e-9:
             if phase["name"] == "stage":

@@ -269,28 +269,42 @@ def test_stage_speeds_names_the_column_that_moves_and_a_disc_rattling_inside_a_c
     assert "B-2   1 discs  median 2.00e+00 mm/s  fastest disc 2.00e+00 mm/s" in lines[2]
 
 
-def test_gone_columns_tells_a_corner_falling_off_from_a_column_top_toppling(empty_scene, tmp_path):
+@pytest.mark.parametrize("first_stage", [False, True])
+def test_gone_columns_tells_a_corner_falling_off_from_a_column_top_toppling(empty_scene, tmp_path, first_stage):
     """scripts/gone_columns.py on a stage where A-1's whole top moved 60 mm and two of B-2's five
     top discs fell 0.8 m: both means pass 50 mm, only A-1's median does, so the medians alone
-    (fail_columns 2) do not fail the stage."""
+    (fail_columns 2) do not fail the stage. A first stage is seen from the snapshot at the start tilt."""
     tops = [_column_top(0.0, 5), _column_top(0.1, 5)]
     O.engines = scene.engines(gravity=(0, 0, 0), timestepper=False)
     series = paraview.ParaViewSeries(str(tmp_path / "paraview"))
-    series.snapshot()  # the last stage that stood
+    series.snapshot()  # the last stage that stood, or the slope at the start tilt
     O.dt = 0.01
     O.step()
     _lower(tops[0], 0.06)
     _lower(tops[1][:2], 0.8)
     series.snapshot()  # the failure
+    failure = {"tilt": 15.0, "outcome": "failed", "time": series.times[1], "gone": ["A-1", "B-2"]}
+    stood = [] if first_stage else [{"tilt": 13.0, "outcome": "equilibrium", "time": series.times[0]}]
     monitor.Checkpoint(str(tmp_path)).save({
         "inputs": {"fail_displacement": 0.05, "fail_columns": 2}, "series": series.state(),
-        "watched_columns": ["A-1", "B-2"], "watched": tops,
-        "stages": [{"tilt": 13.0, "outcome": "equilibrium", "time": series.times[0]},
-                   {"tilt": 15.0, "outcome": "failed", "time": series.times[1], "gone": ["A-1", "B-2"]}]})
+        "watched_columns": ["A-1", "B-2"], "watched": tops, "stages": stood + [failure]})
     lines = load_script("gone_columns").report(str(tmp_path))
+    assert lines[0].endswith("fails at 15 deg, fail_displacement 50 mm")
     assert lines[1] == "  A-1: mean 60.0 mm, median 60.0 mm, 5 of 5 discs past fail_displacement"
     assert lines[2] == "  B-2: mean 320.0 mm, median 0.0 mm, 2 of 5 discs past fail_displacement"
     assert lines[3] == "  by the medians: 1 of fail_columns 2 past fail_displacement, the stage does not fail then"
+
+
+def test_gone_columns_says_when_a_first_stage_has_no_snapshot_at_its_start(empty_scene, tmp_path):
+    """Runs older than the snapshot at the start tilt have none before their first stage's end."""
+    O.engines = scene.engines(gravity=(0, 0, 0), timestepper=False)
+    _column_top(0.0, 5)
+    series = paraview.ParaViewSeries(str(tmp_path / "paraview"))
+    series.snapshot()  # the failure
+    monitor.Checkpoint(str(tmp_path)).save({"series": series.state(), "stages": [
+        {"tilt": 11.0, "outcome": "failed", "time": series.times[0], "gone": ["A-1"]}]})
+    assert load_script("gone_columns").report(str(tmp_path)) == [
+        f"{tmp_path.name}: failed in its first stage, no snapshot at its start"]
 
 
 def test_missing_checkpoint_says_what_to_do(tmp_path):

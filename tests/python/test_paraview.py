@@ -129,10 +129,12 @@ def test_bond_stress_history_reads_the_series_back(empty_scene, tmp_path, capsys
 
 def test_first_crack_reads_the_peaks_and_interpolates_the_tilt(empty_scene, tmp_path):
     """scripts/first_crack.py: the peak bond stress of each stage end (the bond pulled further
-    at the second), and the tilt at which it reaches a strength between them."""
+    at the second; the snapshot at the start tilt is not one), and the tilt at which it reaches a
+    strength between them."""
     first_crack = load_script("first_crack")
     pulled_bond()
     series = paraview.ParaViewSeries(str(tmp_path / "paraview"))
+    series.snapshot()  # the slope at the start tilt: not a stage end
     stages, sigma = [], []
     for tilt in (26.0, 28.0):
         scene.run_steps(5)  # pulled further: more tension
@@ -200,8 +202,8 @@ def test_crack_heights_tells_roots_from_bonds_above_the_table(empty_scene, tmp_p
     (tmp_path / "summary.json").write_text(json.dumps(summary))
     heights.main(str(tmp_path), top=2)
     rows = [[c.strip() for c in line.split("|")[1:-1]] for line in capsys.readouterr().out.splitlines()[3:]]
-    assert rows[0][1:] == ["0", "[0, 0, 0, 0, 0]", "[1, 0, 1, 0, 0]"]
-    assert rows[1][1:] == ["1", "[1, 0, 0, 0, 0]", "[0, 0, 1, 0, 0]"]  # only the upper bond is left
+    assert rows[0] == ["start", "0", "[0, 0, 0, 0, 0]", "[1, 0, 1, 0, 0]"]  # before the first stage's end
+    assert rows[1] == ["30", "1", "[1, 0, 0, 0, 0]", "[0, 0, 1, 0, 0]"]  # only the upper bond is left
 
 
 def save_bonded_run(folder, ids, reference, equilibrium=None):

@@ -105,7 +105,7 @@ def test_a_run_stopped_at_max_tilt_continues_from_its_checkpoint_to_the_same_fai
     assert tilts(continued) == [(17.0, "equilibrium"), (19.0, "equilibrium"), (21.0, "equilibrium"), (23.0, "failed")]
     log = capsys.readouterr().out
     assert log.index("tilt 17.0 deg: equilibrium") < log.index("tilt 23.0 deg: failed")  # the log lists every stage
-    assert continued.series.snapshots == 5  # one per stage, one after the failure's run
+    assert continued.series.snapshots == 6  # one at the start tilt, one per stage, one after the failure's run
 
 
 def test_bonds_broken_by_the_ramp_to_the_start_tilt_are_counted_and_reported(empty_scene, tmp_path, capsys):
