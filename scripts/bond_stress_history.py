@@ -4,10 +4,10 @@
 
 For each snapshot (one at the start tilt, one per stage end, one after the post-failure run)
 prints the tilt of the stage it ends, the intact and broken bonds, and the three largest bond
-tensile stresses sigma_max and the largest shear stress tau of the intact bonds [kPa]: how
-close the rock is to its first crack, which is what a calibration of the bond strength moves. Given stresses [kPa]
-(comma-separated), also how many intact bonds are above each: a few outliers crack first, but
-a slope fails when many bonds crack.
+tensile stresses sigma_max and the largest shear stress tau of the intact bonds [kPa]: how close
+the rock is to its first crack, which is what a calibration of the bond strength moves. Given
+stresses [kPa] (comma-separated), also how many intact bonds are above each: a few outliers
+crack first, but a slope fails when many bonds crack.
 """
 import json
 import os

@@ -4,11 +4,11 @@
 
 For each snapshot of the bonds series (one at the start tilt, one per stage end) prints the
 stage's tilt, the bonds broken since the previous snapshot, and how many of them, and of the
-``top`` (20) most stressed intact bonds, are roots (bonds to a disc of the table's fixed layer, centred within
-Rmax of the table as the example fixes them: where the columns are tied to the table) or lie
-in each band of height above the table (y = 0); the ideal model's design plane rises from the
-toe to 80 mm at the seventh column. A slope that topples along a surface through the columns
-cracks above the roots; one that breaks off the table cracks at them.
+``top`` (20) most stressed intact bonds, are roots (bonds to a disc of the table's fixed layer,
+centred within Rmax of the table as the example fixes them: where the columns are tied to the
+table) or lie in each band of height above the table (y = 0); the ideal model's design plane
+rises from the toe to 80 mm at the seventh column. A slope that topples along a surface through
+the columns cracks above the roots; one that breaks off the table cracks at them.
 """
 import os
 import sys

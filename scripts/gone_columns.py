@@ -3,9 +3,10 @@
     python3 scripts/gone_columns.py results/tilting_table/<run> [...]
 
 From a run's checkpoint.json and its ParaView snapshots (one at the start tilt, one after every
-stage), for the first failing stage: per gone column, the mean and the median displacement of its watched top discs
-from the stage's start to the failure, and how many of them moved more than fail_displacement;
-then whether the medians alone fail the stage at that moment (fail_columns past it).
+stage), for the first failing stage: per gone column, the mean and the median displacement of
+its watched top discs from the stage's start to the failure, and how many of them moved more
+than fail_displacement; then whether the medians alone fail the stage at that moment
+(fail_columns past it).
 A column that toppled off moves with most of its discs; a mean past fail_displacement with a
 median far below it is a part (a corner of the top) that broke off and fell, and the column stood
 (docs/tilting_table.md, "A column top's corner falling off").
