@@ -13,7 +13,7 @@ import json
 import os
 import sys
 import xml.etree.ElementTree as ET
-from typing import Sequence
+from typing import Optional, Sequence
 
 import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
@@ -42,11 +42,16 @@ def stage_tilts(folder: str) -> list[tuple[float, float]]:
     return [(s["time"], s["tilt"]) for s in run_record(folder).get("stages", [])]
 
 
+def stage_tilt(time: float, stages: list[tuple[float, float]]) -> Optional[float]:
+    """The tilt of the stage (of the run's ``stage_tilts``) that ends at ``time``, None if none does."""
+    return next((t for end, t in stages if abs(end - time) < 1e-9), None)
+
+
 def snapshot_label(time: float, stages: list[tuple[float, float]]) -> str:
     """What the snapshot written at ``time`` shows, given the run's ``stage_tilts``: the tilt of
     the stage it ends, "start" (the slope at the start tilt, before its first stage ran) or
     "after failure"."""
-    tilt = next((t for end, t in stages if abs(end - time) < 1e-9), None)
+    tilt = stage_tilt(time, stages)
     if tilt is not None:
         return f"{tilt:g}"
     return "start" if stages and time < stages[0][0] else "after failure"

@@ -20,7 +20,7 @@ import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from bond_stress_history import bond_pairs, cell_arrays, read_grid, run_record, snapshots, stage_tilts  # noqa: E402
+from bond_stress_history import bond_pairs, cell_arrays, read_grid, run_record, snapshots, stage_tilt, stage_tilts  # noqa: E402
 from toppling.analysis import column_label  # noqa: E402
 from toppling.columns import ColumnLayout  # noqa: E402
 
@@ -32,12 +32,12 @@ RANKS = 3  # the most stressed bonds followed: the first crack may stand alone, 
 def elastic_peaks(folder: str) -> list[tuple[float, list[float], np.ndarray]]:
     """(tilt, the RANKS largest sigma_max [Pa] of the intact bonds, largest first, and their
     midpoints (x, y)) at the end of each stage up to the first with more than FEW_BROKEN broken bonds."""
-    ends = dict(stage_tilts(folder))
+    stages = stage_tilts(folder)
     peaks = []
     for time, path in snapshots(folder):
-        if time < min(ends, default=time):  # the slope at the start tilt, still ringing from the ramp
+        if stages and time < stages[0][0]:  # the slope at the start tilt, still ringing from the ramp
             continue
-        tilt = next((t for end, t in ends.items() if abs(end - time) < 1e-9), None)
+        tilt = stage_tilt(time, stages)
         grid = read_grid(path)
         bonds = cell_arrays(grid)
         intact = np.flatnonzero(bonds["state"] == 1)
