@@ -6,7 +6,11 @@ sees them once they carry force), then times the step: best of BENCH_REPEATS (3)
 discs, interactions, dt, steps per second and simulated seconds per wall hour, which with the
 2-3 s a run simulates says how long a packing takes.
 
-    ./yade -x -n -j1 scripts/benchmark_tilting_table.py [rmin rmax [arrangement [joint_stiffness_scale]]]
+With ``z_order`` ``both`` it builds the scene twice in the same process, discs in the packer's
+order (``z_order`` 0) and in Z-order (1), times them in turn (0, 1, 0, 1: the machine's load
+drifts alike over both), and prints the speed-up of Z-order over the packer's order.
+
+    ./yade -x -n -j1 scripts/benchmark_tilting_table.py [rmin rmax [arrangement [joint_stiffness_scale [z_order]]]]
 """
 import os
 import sys
@@ -20,10 +24,11 @@ from tilting_table_model import definitions  # noqa: E402
 WARM_UP, STEPS, REPEATS = 2000, 2000, int(os.environ.get("BENCH_REPEATS", "3"))
 
 
-def build(rmin: float, rmax: float, arrangement: str, joint_stiffness_scale: float) -> None:
+def build(rmin: float, rmax: float, arrangement: str, joint_stiffness_scale: float, z_order: int) -> None:
     """The example's scene, without running it: its build()."""
-    definitions(arrangement=f"'{arrangement}'", rmin=rmin, rmax=rmax,
-                joint_stiffness_scale=joint_stiffness_scale)["build"]()
+    O.reset()
+    definitions(arrangement=f"'{arrangement}'", rmin=rmin, rmax=rmax, joint_stiffness_scale=joint_stiffness_scale,
+                z_order=z_order)["build"]()
 
 
 def time_steps() -> dict:
@@ -38,18 +43,32 @@ def time_steps() -> dict:
                 rate=rate, per_hour=rate * O.dt * 3600)
 
 
+def row(r: dict, label: str = "") -> str:
+    return f"| {label}{r['discs']} | {r['interactions']} | {r['dt']:.2e} | {r['rate']:.0f} | {r['per_hour']:.2f} |"
+
+
 def main() -> None:
     args = sys.argv[1:]
     rmin, rmax = (float(args[0]), float(args[1])) if len(args) >= 2 else (2e-3, 8e-3)
     arrangement = args[2] if len(args) >= 3 else "ideal"
     scale = float(args[3]) if len(args) >= 4 else 1.0
+    order = args[4] if len(args) >= 5 else "1"
+    if order not in ("0", "1", "both"):
+        raise SystemExit(f"z_order = {order} is invalid: it must be 0, 1 or both")
     print(f"tilting table, {arrangement}, R {1e3 * rmin:g}-{1e3 * rmax:g} mm, joint stiffness x {scale:g}, "
           f"{O.numThreads} thread(s)")
-    build(rmin, rmax, arrangement, scale)
-    r = time_steps()
-    print("| discs | interactions | dt (s) | steps/s | simulated s per wall hour |")
+    orders = [0, 1, 0, 1] if order == "both" else [int(order)]
+    print(f"| {'z_order: ' if order == 'both' else ''}discs | interactions | dt (s) | steps/s | simulated s per wall hour |")
     print("|---|---|---|---|---|")
-    print(f"| {r['discs']} | {r['interactions']} | {r['dt']:.2e} | {r['rate']:.0f} | {r['per_hour']:.2f} |")
+    rates = {0: [], 1: []}
+    for z in orders:
+        build(rmin, rmax, arrangement, scale, z)
+        r = time_steps()
+        rates[z].append(r["rate"])
+        print(row(r, f"{z}: " if order == "both" else ""), flush=True)
+    if order == "both":
+        print(f"Z-order over the packer's order: x{max(rates[1]) / max(rates[0]):.2f} in steps/s "
+              f"(best of each; pairs x{rates[1][0] / rates[0][0]:.2f}, x{rates[1][1] / rates[0][1]:.2f})")
 
 
 main()

@@ -92,6 +92,29 @@ def test_pairs_within_finds_exactly_the_pairs_a_brute_force_search_finds():
     assert len(found) == len(set(found)) and set(found) == expected
 
 
+def test_z_order_visits_cells_in_morton_order():
+    cells = [(ix, iy) for iy in range(4) for ix in range(4)]
+    random.Random(2).shuffle(cells)
+    ordered = packing.z_order([(ix + 0.5, iy + 0.5, 0.5) for ix, iy in cells])  # one disc per cell of a diameter
+    assert [(x - 0.5, y - 0.5) for x, y, _ in ordered] == [
+        (0, 0), (1, 0), (0, 1), (1, 1), (2, 0), (3, 0), (2, 1), (3, 1),
+        (0, 2), (1, 2), (0, 3), (1, 3), (2, 2), (3, 2), (2, 3), (3, 3)]
+
+
+def test_z_order_keeps_the_discs_and_brings_neighbours_near():
+    rng = random.Random(7)
+    discs = [(rng.uniform(0, 0.2), rng.uniform(0, 0.2), rng.uniform(1e-3, 2.5e-3)) for _ in range(3000)]
+    ordered = packing.z_order(discs)
+    assert sorted(ordered) == sorted(discs)
+
+    def mean_id_distance(ds):
+        pairs = list(packing.pairs_within([d[:2] for d in ds], [d[2] for d in ds], 1e-3))
+        return sum(j - i for i, j, _ in pairs) / len(pairs)
+    # random ids: about N/3 apart (1001 here); along the curve 36, the jumps between quadrants included
+    assert mean_id_distance(discs) > 900 and mean_id_distance(ordered) < 50
+    assert packing.z_order([]) == []
+
+
 def test_shrink_overlaps_leaves_no_overlap_and_shrinks_by_half_the_largest():
     two = packing.shrink_overlaps([(0, 0, 1.0), (1.8, 0, 1.0), (5, 0, 1.0)])  # overlap 0.2; a third apart
     assert two == [(0, 0, pytest.approx(0.9)), (1.8, 0, pytest.approx(0.9)), (5, 0, 1.0)]

@@ -24,7 +24,9 @@ def test_bad_tilt_parameters_stop_before_the_model_is_built(tmp_path, params):
                                                ("cut_rules", 2, "0 (every block boundary a joint) or 1"),
                                                ("toe_column", 2, "0 (no toe column) or 1"),
                                                ("joint_pieces", 2, "0 (blocks by the main joints only) or 1"),
-                                               ("arrest_time", -1.0, "0 (the first failing stage is the failure) or > 0 s")])
+                                               ("arrest_time", -1.0, "0 (the first failing stage is the failure) or > 0 s"),
+                                               ("z_order", 2, "0 (the packer's order) or 1 (discs near in space "
+                                                              "get near ids: a faster step)")])
 def test_a_numerical_parameter_out_of_range_stops_the_run(tmp_path, name, value, valid):
     proc = run_yade("examples/tilting_table.py", tmp_path, rmin=0.002, rmax=0.008, **{name: value})
     assert proc.returncode != 0
