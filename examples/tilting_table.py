@@ -93,7 +93,8 @@ a rerun with `start_tilt` below it judges those tilts in stages. Each stage runs
   moved further than `rest_speed` times the stage's time (less is a column ringing in place), or
   `fail_columns` column tops have moved more than `fail_displacement` (one column width: toppled
   off their neighbours). With `fail_columns` 2 a column that topples off alone (the toe column
-  A-1 once its root has cracked) is gone, watched no more, and the others decide. A local
+  A-1 once its root has cracked) is gone, watched no more, and the others decide (all of them,
+  once fewer than `fail_columns` are left). A local
   collapse that comes to rest is not failure. Why these thresholds: README, "Failure tilt".
 
 Damping: the thesis' only damping is viscous, in the contacts and bonds (Table 5-2's critical

@@ -153,6 +153,9 @@ class TiltRun:
         self.layout = layout = columns.ColumnLayout(**state["layout"])
         self.off_table = -2 * rmax
         self.ids, self.watched = state["ids"], state["watched"]
+        if state.get("phase") is None and criteria.fail_columns > len(self.watched):  # a resumed run may watch fewer
+            raise ValueError(f"fail_columns = {criteria.fail_columns} is invalid: it must be at most the number of "
+                             f"watched groups ({len(self.watched)})")
         # older checkpoints lack the labels: the column each watched group stands in when resumed
         self.watched_columns = state.get("watched_columns") or [
             analysis.column_label(layout.column_of(x)) if layout.column_of(x) else "?"

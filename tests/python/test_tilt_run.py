@@ -36,13 +36,13 @@ def protocol(**changes) -> tilt_run.TiltProtocol:
                                            checkpoint_every=600.0), **changes})
 
 
-def fresh_run(tmp_path, p: tilt_run.TiltProtocol) -> tilt_run.TiltRun:
+def fresh_run(tmp_path, p: tilt_run.TiltProtocol, criteria: tilting.StageCriteria = CRITERIA) -> tilt_run.TiltRun:
     setup = incline.build(0.1, 0.05, RMIN, RMAX, ROCK, FRICTION_DEG)
     layout = columns.ColumnLayout(toe_x=0.15, width=0.1, heights=[0.05])  # the block as column A-1
     state = tilt_run.fresh_state({"case": "block"}, layout, setup.block + setup.base, {"A-1": setup.block},
                                  p.start_tilt)
     points = monitor.MonitoringPoints(["A-1"], [setup.toe])
-    return tilt_run.TiltRun(p, CRITERIA, monitor.Checkpoint(str(tmp_path)), state, points, Series(), RMIN, RMAX)
+    return tilt_run.TiltRun(p, criteria, monitor.Checkpoint(str(tmp_path)), state, points, Series(), RMIN, RMAX)
 
 
 def cantilever_run(tmp_path, p: tilt_run.TiltProtocol, tensile_strength: float, shrink: bool = True) -> tilt_run.TiltRun:
@@ -189,19 +189,27 @@ def test_a_column_that_toppled_off_alone_does_not_fail_a_later_stage_with_anothe
     """fail_columns 2: a disc falling in the void from the first stage on (a column gone off the
     table, its pieces still moving) and the block sliding off at 25 deg each go alone, the fixed
     base stays; counted again, the falling disc would fail the 25 deg stage with the block (as in
-    table line 288's first run)."""
+    table line 288's first run). The base, then watched alone, is judged on: a stage goes on
+    with fewer columns than fail_columns."""
     setup = incline.build(0.1, 0.05, RMIN, RMAX, ROCK, FRICTION_DEG)
     faller = O.bodies.append(scene.disc((-1.0, 1.0), RMIN, O.bodies[setup.block[0]].material))
     layout = columns.ColumnLayout(toe_x=0.15, width=0.1, heights=[0.05])
     state = tilt_run.fresh_state({"case": "block"}, layout, setup.block + setup.base + [faller],
                                  {"A-1": setup.block, "B-2": [faller], "C-3": setup.base}, 17.0)
-    run = tilt_run.TiltRun(protocol(step=4.0, max_tilt=25.0), dataclasses.replace(CRITERIA, fail_columns=2),
+    run = tilt_run.TiltRun(protocol(step=4.0, max_tilt=29.0), dataclasses.replace(CRITERIA, fail_columns=2),
                            monitor.Checkpoint(str(tmp_path)), state, monitor.MonitoringPoints(["A-1"], [setup.toe]),
                            Series(), RMIN, RMAX)
     assert run.run() is None
     assert [(s["tilt"], s["outcome"], s["gone"]) for s in run.state["stages"]] == [
-        (17.0, "equilibrium", ["B-2"]), (21.0, "equilibrium", []), (25.0, "equilibrium", ["A-1"])]
+        (17.0, "equilibrium", ["B-2"]), (21.0, "equilibrium", []), (25.0, "equilibrium", ["A-1"]),
+        (29.0, "equilibrium", [])]
     assert run.watched_columns == ["C-3"] and run.state["watched_columns"] == ["C-3"]
+
+
+def test_a_fresh_run_refuses_more_fail_columns_than_it_watches(empty_scene, tmp_path):
+    with pytest.raises(ValueError, match=r"fail_columns = 2 is invalid: it must be at most the number of watched "
+                                         r"groups \(1\)"):
+        fresh_run(tmp_path, protocol(), dataclasses.replace(CRITERIA, fail_columns=2))
 
 
 @pytest.mark.parametrize("name, value, valid", [("checkpoint_every", 0.0, "> 0 (wall seconds)"),
