@@ -32,7 +32,8 @@ NUMERICS = {"timestep_safety": 0.5, "seed": 1, "joint_stiffness_scale": 1.0}  # 
 ADDED = {"shrink_overlaps": 0, "fail_columns": 1, "bond_gap": 0.0, "damping": 0.7, "settle_damping": 0.7,
          "stage_rate": 0.0, "layout_seed": 1, "sliding_toe": 0, "cut_rules": 1, "toe_column": 1,
          "joint_pieces": 0, "arrest_time": 0.0}
-RUN_ONLY = ("out", "resume", "checkpoint_every", "max_tilt", "post_failure_time")  # no part of the model
+# no part of the model (z_order only numbers the discs)
+RUN_ONLY = ("out", "resume", "checkpoint_every", "max_tilt", "post_failure_time", "z_order")
 SIZE_TOLERANCE_DEG = 2.0
 TARGET_TOLERANCE_DEG = 3.0  # issue 4: the thesis' failure tilt +- 3 deg
 TABLE_BOND_GAP = 1.05e-3  # [m] Table 5-2: what bond_gap 0 stands for (examples/tilting_table.py)
