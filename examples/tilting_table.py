@@ -60,10 +60,10 @@ surface y = 0, columns standing along +y, the toe at the right, the slope to the
   at 50 kPa that broke 10 bonds in the first 0.4 ms, before gravity had loaded anything. 0 bonds
   the packing as it is (the table's rows run before this option keep 0, so they reproduce).
 * `z_order` = 1 (default) numbers the discs along a Z-order curve, so that neighbours get near ids
-  and a step reads bodies near in memory: the R 1-2.5 mm packing's step runs 1.3 times faster, the
-  R 2-8 mm one's, which fits the cache either way, 1.1 times (README, "Cost of a tilting-table run"). The discs are the same; the order in which forces
-  are summed changes, and with it a run's rounding. The table's rows run before it keep 0, so they
-  reproduce.
+  and a step reads bodies near in memory: the R 1-2.5 mm packing's step runs 1.3 times faster,
+  the R 2-8 mm one's, which fits the cache either way, 1.1 times (README, "Cost of a
+  tilting-table run"). The discs are the same; the order in which forces are summed changes, and
+  with it a run's rounding. The table's rows run before it keep 0, so they reproduce.
 
 Calibration (the issue allows joint friction and bond strengths within the thesis' ranges;
 `bond_tensile_strength`, `main_joint_friction`, `base_joint_friction`, 0 = the tables' value).
