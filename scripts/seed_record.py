@@ -8,8 +8,10 @@ For each packing size (a column of the record): seeds, mean ± standard deviatio
 within 3 deg of the thesis' 35 deg, the mean minus 35 with its standard error and verdict
 (collect_tilting_table.mean_against), and the margin |mean - 35| + 2 standard errors that the
 verdict compares with 3 deg. Then the size check: each finer column's mean minus the first
-column's, with the verdict of collect_tilting_table.mean_difference.
+column's, with the verdict of collect_tilting_table.mean_difference, and the seeds per size at
+which a true difference of 0 would read "yes" at the spreads measured so far.
 """
+import math
 import os
 import re
 import statistics
@@ -44,6 +46,13 @@ def margin(tilts: list[float]) -> float:
     return abs(statistics.mean(tilts) - THESIS_TILT_DEG) + 2 * se
 
 
+def seeds_for_yes(fine: list[float], coarse: list[float]) -> int:
+    """Seeds per size at which a difference of 0 would be "yes": two standard errors of the
+    difference, 2 sqrt((var_fine + var_coarse) / n), within the size check's tolerance."""
+    spread = statistics.variance(fine) + statistics.variance(coarse)
+    return math.ceil(spread / (collect.SIZE_TOLERANCE_DEG / 2) ** 2)
+
+
 def report(tilts: dict[str, list[float]]) -> list[str]:
     """The Markdown rows of the verdicts and the size check (module docstring)."""
     rows = [f"| packing | seeds | failure tilt (°) | median | within 3° of {THESIS_TILT_DEG:g}° | "
@@ -53,10 +62,11 @@ def report(tilts: dict[str, list[float]]) -> list[str]:
         rows.append(f"| {size} | {len(values)} | {collect.stats_text(values)} | {statistics.median(values):g} | "
                     f"{inside} | {collect.mean_against(values, THESIS_TILT_DEG)} | {margin(values):.2f} |")
     coarse_size, coarse = next(iter(tilts.items()))
-    rows += ["", "| size check | difference of the means ± standard error (°) | within 2°? |", "|---|---|---|"]
+    rows += ["", "| size check | difference of the means ± standard error (°) | within 2°? | "
+             "seeds per size for a yes at a difference of 0 |", "|---|---|---|---|"]
     for size, fine in list(tilts.items())[1:]:
         difference, verdict = collect.mean_difference(fine, coarse)
-        rows.append(f"| {size} − {coarse_size} | {difference} | {verdict} |")
+        rows.append(f"| {size} − {coarse_size} | {difference} | {verdict} | {seeds_for_yes(fine, coarse)} |")
     return rows
 
 
