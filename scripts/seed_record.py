@@ -9,7 +9,8 @@ within 3 deg of the thesis' 35 deg, the mean minus 35 with its standard error an
 (collect_tilting_table.mean_against), and the margin |mean - 35| + 2 standard errors that the
 verdict compares with 3 deg. Then the size check: each finer column's mean minus the first
 column's, with the verdict of collect_tilting_table.mean_difference, and the seeds per size at
-which a true difference of 0 would read "yes" at the spreads measured so far.
+which a true difference of 0, and one equal to the measured difference, would read "yes" at the
+spreads measured so far ("none" when the measured difference alone reaches the tolerance).
 """
 import math
 import os
@@ -46,11 +47,15 @@ def margin(tilts: list[float]) -> float:
     return abs(statistics.mean(tilts) - THESIS_TILT_DEG) + 2 * se
 
 
-def seeds_for_yes(fine: list[float], coarse: list[float]) -> int:
-    """Seeds per size at which a difference of 0 would be "yes": two standard errors of the
-    difference, 2 sqrt((var_fine + var_coarse) / n), within the size check's tolerance."""
+def seeds_for_yes(fine: list[float], coarse: list[float], difference: float = 0.0) -> int | None:
+    """Seeds per size at which a true ``difference`` of the means would be "yes": |difference| plus
+    two standard errors of the difference, 2 sqrt((var_fine + var_coarse) / n), within the size
+    check's tolerance; None if |difference| alone reaches the tolerance."""
+    room = collect.SIZE_TOLERANCE_DEG - abs(difference)
+    if room <= 0:
+        return None
     spread = statistics.variance(fine) + statistics.variance(coarse)
-    return math.ceil(spread / (collect.SIZE_TOLERANCE_DEG / 2) ** 2)
+    return math.ceil(spread / (room / 2) ** 2)
 
 
 def report(tilts: dict[str, list[float]]) -> list[str]:
@@ -63,10 +68,13 @@ def report(tilts: dict[str, list[float]]) -> list[str]:
                     f"{inside} | {collect.mean_against(values, THESIS_TILT_DEG)} | {margin(values):.2f} |")
     coarse_size, coarse = next(iter(tilts.items()))
     rows += ["", "| size check | difference of the means ± standard error (°) | within 2°? | "
-             "seeds per size for a yes at a difference of 0 |", "|---|---|---|---|"]
+             "seeds per size for a yes at a difference of 0 | at the measured difference |",
+             "|---|---|---|---|---|"]
     for size, fine in list(tilts.items())[1:]:
         difference, verdict = collect.mean_difference(fine, coarse)
-        rows.append(f"| {size} − {coarse_size} | {difference} | {verdict} | {seeds_for_yes(fine, coarse)} |")
+        measured = seeds_for_yes(fine, coarse, statistics.mean(fine) - statistics.mean(coarse))
+        rows.append(f"| {size} − {coarse_size} | {difference} | {verdict} | {seeds_for_yes(fine, coarse)} | "
+                    f"{'none' if measured is None else measured} |")
     return rows
 
 

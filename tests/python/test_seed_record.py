@@ -34,7 +34,7 @@ def test_the_report_gives_each_size_its_verdict_and_the_size_check():
     rows = record.report(record.read_record(MADE_UP))
     assert rows[2] == "| coarse | 4 | 36.0 ± 4.5 | 37 | 1 | +1.0 ± 2.3: undecided | 5.55 |"
     assert rows[3] == "| fine, a gap | 3 | 35.0 ± 1.0 | 35 | 3 | +0.0 ± 0.6: yes | 1.15 |"
-    assert rows[-1] == "| fine, a gap − coarse | -1.0 ± 2.3 | undecided | 22 |"
+    assert rows[-1] == "| fine, a gap − coarse | -1.0 ± 2.3 | undecided | 22 | 87 |"
 
 
 def test_the_seeds_for_a_yes_are_the_fewest_that_read_a_zero_difference_as_yes():
@@ -43,6 +43,19 @@ def test_the_seeds_for_a_yes_are_the_fewest_that_read_a_zero_difference_as_yes()
     assert n == 22
     assert record.collect.within(0.0, (spread / n) ** 0.5, 2.0) == "yes"
     assert record.collect.within(0.0, (spread / (n - 1)) ** 0.5, 2.0) == "undecided"
+
+
+def test_at_a_measured_difference_the_seeds_leave_two_standard_errors_in_what_is_left_of_2_deg():
+    fine, coarse = [34.0, 36.0, 35.0], [30.0, 40.0, 35.0, 39.0]
+    spread = 62 / 3 + 1
+    n = record.seeds_for_yes(fine, coarse, -1.0)
+    assert n == 87  # 2 sqrt(spread / n) <= 2 - 1
+    assert record.collect.within(-1.0, (spread / n) ** 0.5, 2.0) == "yes"
+    assert record.collect.within(-1.0, (spread / (n - 1)) ** 0.5, 2.0) == "undecided"
+
+
+def test_a_measured_difference_at_the_tolerance_needs_no_number_of_seeds():
+    assert record.seeds_for_yes([34.0, 36.0], [30.0, 40.0], 2.0) is None
 
 
 def test_a_file_without_the_record_names_what_is_missing():
