@@ -21,6 +21,10 @@ Text after the table, | with a bar.
 """.splitlines()
 
 
+FINE, COARSE = [34.0, 36.0, 35.0], [30.0, 40.0, 35.0, 39.0]  # the made-up record's columns
+SPREAD = 62 / 3 + 1  # their two sample variances
+
+
 def test_the_record_is_read_by_column_and_a_seed_not_run_is_left_out():
     assert record.read_record(MADE_UP) == {"coarse": [30.0, 40.0, 35.0, 39.0], "fine, a gap": [34.0, 36.0, 35.0]}
 
@@ -38,20 +42,17 @@ def test_the_report_gives_each_size_its_verdict_and_the_size_check():
 
 
 def test_the_seeds_for_a_yes_are_the_fewest_that_read_a_zero_difference_as_yes():
-    n = record.seeds_for_yes([34.0, 36.0, 35.0], [30.0, 40.0, 35.0, 39.0])
-    spread = 62 / 3 + 1  # the two sample variances
+    n = record.seeds_for_yes(FINE, COARSE)
     assert n == 22
-    assert record.collect.within(0.0, (spread / n) ** 0.5, 2.0) == "yes"
-    assert record.collect.within(0.0, (spread / (n - 1)) ** 0.5, 2.0) == "undecided"
+    assert record.collect.within(0.0, (SPREAD / n) ** 0.5, 2.0) == "yes"
+    assert record.collect.within(0.0, (SPREAD / (n - 1)) ** 0.5, 2.0) == "undecided"
 
 
 def test_at_a_measured_difference_the_seeds_leave_two_standard_errors_in_what_is_left_of_2_deg():
-    fine, coarse = [34.0, 36.0, 35.0], [30.0, 40.0, 35.0, 39.0]
-    spread = 62 / 3 + 1
-    n = record.seeds_for_yes(fine, coarse, -1.0)
-    assert n == 87  # 2 sqrt(spread / n) <= 2 - 1
-    assert record.collect.within(-1.0, (spread / n) ** 0.5, 2.0) == "yes"
-    assert record.collect.within(-1.0, (spread / (n - 1)) ** 0.5, 2.0) == "undecided"
+    n = record.seeds_for_yes(FINE, COARSE, -1.0)
+    assert n == 87  # 2 sqrt(SPREAD / n) <= 2 - 1
+    assert record.collect.within(-1.0, (SPREAD / n) ** 0.5, 2.0) == "yes"
+    assert record.collect.within(-1.0, (SPREAD / (n - 1)) ** 0.5, 2.0) == "undecided"
 
 
 def test_a_measured_difference_at_the_tolerance_needs_no_number_of_seeds():
