@@ -29,6 +29,26 @@ def test_the_record_is_read_by_column_and_a_seed_not_run_is_left_out():
     assert record.read_record(MADE_UP) == {"coarse": [30.0, 40.0, 35.0, 39.0], "fine, a gap": [34.0, 36.0, 35.0]}
 
 
+STOPPED = [line.replace("| 35 (23) |", "| ≥ 40 (23; stood at 38°) |") for line in MADE_UP]
+
+
+def test_a_seed_stopped_before_it_failed_is_a_lower_bound_kept_apart_from_the_tilts():
+    assert record.read_record(STOPPED) == {"coarse": COARSE, "fine, a gap": [34.0, 36.0]}
+    bounds = record.read_record(STOPPED, record.BOUND_CELL)
+    assert bounds == {"coarse": [], "fine, a gap": [40.0]}
+    assert record.with_bounds(record.read_record(STOPPED), bounds)["fine, a gap"] == [34.0, 36.0, 40.0]
+
+
+def test_main_prints_the_verdicts_again_with_the_stopped_seeds_at_their_bounds(tmp_path, capsys):
+    path = tmp_path / "record.md"
+    path.write_text("\n".join(STOPPED))
+    record.main(str(path))
+    out = capsys.readouterr().out
+    assert "(fine, a gap 1) at their lower bounds" in out
+    assert "| fine, a gap | 2 | 35.0 ± 1.4 |" in out  # without the bound
+    assert "| fine, a gap | 3 | 36.7 ± 3.1 |" in out  # with it: a higher mean
+
+
 def test_the_margin_is_the_distance_from_35_plus_two_standard_errors():
     # mean 36, sample variance 62/3, standard error 2.27
     assert record.margin([30.0, 40.0, 35.0, 39.0]) == pytest.approx(1.0 + 2 * (62 / 3 / 4) ** 0.5)
