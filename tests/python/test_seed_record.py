@@ -23,13 +23,11 @@ Text after the table, | with a bar.
 
 FINE, COARSE = [34.0, 36.0, 35.0], [30.0, 40.0, 35.0, 39.0]  # the made-up record's columns
 SPREAD = 62 / 3 + 1  # their two sample variances
+STOPPED = [line.replace("| 35 (23) |", "| ≥ 40 (23; stood at 38°) |") for line in MADE_UP]  # seed 4 fine unfailed
 
 
 def test_the_record_is_read_by_column_and_a_seed_not_run_is_left_out():
     assert record.read_record(MADE_UP) == {"coarse": [30.0, 40.0, 35.0, 39.0], "fine, a gap": [34.0, 36.0, 35.0]}
-
-
-STOPPED = [line.replace("| 35 (23) |", "| ≥ 40 (23; stood at 38°) |") for line in MADE_UP]
 
 
 def test_a_seed_stopped_before_it_failed_is_a_lower_bound_kept_apart_from_the_tilts():
