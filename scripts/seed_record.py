@@ -11,6 +11,10 @@ verdict compares with 3 deg. Then the size check: each finer column's mean minus
 column's, with the verdict of collect_tilting_table.mean_difference, and the seeds per size at
 which a true difference of 0, and one equal to the measured difference, would read "yes" at the
 spreads measured so far ("none" when the measured difference alone reaches the tolerance).
+Last, the same difference paired by seed (the rows with a tilt in both columns): the pairs, the
+correlation of the two sizes' tilts and the mean of the per-seed differences with its standard
+error. It is printed beside the size check, not in its place: the check was set on the means of
+all seeds per size before the record showed whether a seed's two packings fail alike.
 
 A seed stopped before it failed (its run lost with a machine's `results/`) has a cell "≥ 40 (333;
 ...)": it stood at 38 deg, so its failure tilt is at least 40. Such seeds are left out of the
@@ -33,12 +37,17 @@ TILT_CELL = re.compile(r"\s*(\d+(?:\.\d+)?)\s*\(")  # "38 (190)": failure tilt (
 BOUND_CELL = re.compile(r"\s*≥\s*(\d+(?:\.\d+)?)\s*\(")  # "≥ 40 (333; ...)": a seed stopped unfailed
 
 
+def record_columns(lines: Iterable[str]) -> tuple[list[str], list[list[str]]]:
+    """The record's packing sizes (its columns' headers up to their colons) and its rows' cells."""
+    header, rows = collect.record_table(lines, RECORD_HEADING)
+    return [text.split(":")[0].strip() for text in header[1:]], rows
+
+
 def read_record(lines: Iterable[str], cell: re.Pattern = TILT_CELL) -> dict[str, list[float]]:
     """The numbers that ``cell`` matches, by packing size (the column's header up to its colon),
     in the first Markdown table after RECORD_HEADING: failure tilts by default, lower bounds with
     BOUND_CELL; a cell that does not match (a seed not run, "–") is left out."""
-    header, rows = collect.record_table(lines, RECORD_HEADING)
-    sizes = [text.split(":")[0].strip() for text in header[1:]]
+    sizes, rows = record_columns(lines)
     tilts: dict[str, list[float]] = {size: [] for size in sizes}
     for row in rows:
         for size, text in zip(sizes, row[1:]):
@@ -70,6 +79,29 @@ def seeds_for_yes(fine: list[float], coarse: list[float], difference: float = 0.
     return math.ceil(spread / (room / 2) ** 2)
 
 
+def read_pairs(lines: Iterable[str]) -> dict[str, list[tuple[float, float]]]:
+    """(first column's tilt, this column's tilt) for each seed failed at both, by finer size."""
+    sizes, rows = record_columns(lines)
+    pairs: dict[str, list[tuple[float, float]]] = {size: [] for size in sizes[1:]}
+    for row in rows:
+        matches = [TILT_CELL.match(text) for text in row[1:]]
+        if not matches[0]:
+            continue
+        for size, match in zip(sizes[1:], matches[1:]):
+            if match:
+                pairs[size].append((float(matches[0].group(1)), float(match.group(1))))
+    return pairs
+
+
+def paired_row(size: str, coarse_size: str, pairs: list[tuple[float, float]]) -> str:
+    """The Markdown row of the difference paired by seed: pairs, correlation, mean ± standard error."""
+    coarse, fine = zip(*pairs)
+    differences = [b - a for a, b in pairs]
+    se = statistics.stdev(differences) / len(differences) ** 0.5
+    return (f"| {size} − {coarse_size} | {len(pairs)} | {statistics.correlation(coarse, fine):.2f} | "
+            f"{statistics.mean(differences):+.2f} ± {se:.2f} |")
+
+
 def report(tilts: dict[str, list[float]]) -> list[str]:
     """The Markdown rows of the verdicts and the size check (module docstring)."""
     rows = [f"| packing | seeds | failure tilt (°) | median | within 3° of {THESIS_TILT_DEG:g}° | "
@@ -95,6 +127,11 @@ def main(path: str) -> None:
         lines = f.read().splitlines()
     tilts, bounds = read_record(lines), read_record(lines, BOUND_CELL)
     print("\n".join(report(tilts)))
+    coarse_size = next(iter(tilts))
+    print("\n| paired by seed | pairs | correlation | mean of fine − coarse ± standard error (°) |\n|---|---|---|---|")
+    for size, pairs in read_pairs(lines).items():
+        if len(pairs) >= 2:
+            print(paired_row(size, coarse_size, pairs))
     unfinished = ", ".join(f"{size} {len(values)}" for size, values in bounds.items() if values)
     if unfinished:
         print(f"\nWith the seeds stopped before they failed ({unfinished}) at their lower bounds:\n")

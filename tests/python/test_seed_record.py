@@ -77,6 +77,26 @@ def test_a_measured_difference_at_the_tolerance_needs_no_number_of_seeds():
     assert record.seeds_for_yes([34.0, 36.0], [30.0, 40.0], 2.0) is None
 
 
+def test_seeds_pair_only_where_both_sizes_failed():
+    assert record.read_pairs(MADE_UP) == {"fine, a gap": [(30.0, 34.0), (35.0, 36.0), (39.0, 35.0)]}
+    assert record.read_pairs(STOPPED) == {"fine, a gap": [(30.0, 34.0), (35.0, 36.0)]}  # seed 4's bound is out
+
+
+def test_the_paired_row_is_the_mean_of_the_per_seed_differences():
+    # differences 4, 1, -4: mean 1/3, sample variance 49/3, standard error 7/3;
+    # correlation 5 / sqrt(122/3 * 2) of the centred tilts (-14/3, 1/3, 13/3) and (-1, 1, 0)
+    row = record.paired_row("fine", "coarse", record.read_pairs(MADE_UP)["fine, a gap"])
+    assert row == "| fine − coarse | 3 | 0.55 | +0.33 ± 2.33 |"
+
+
+def test_main_prints_the_paired_difference_after_the_size_check(tmp_path, capsys):
+    path = tmp_path / "record.md"
+    path.write_text("\n".join(MADE_UP))
+    record.main(str(path))
+    out = capsys.readouterr().out
+    assert out.index("| size check |") < out.index("| fine, a gap − coarse | 3 | 0.55 | +0.33 ± 2.33 |")
+
+
 def test_a_file_without_the_record_names_what_is_missing():
     with pytest.raises(ValueError, match="Every seed at 95 kPa"):
         record.read_record(["| a | b |"])
