@@ -102,6 +102,13 @@ def paired_row(size: str, coarse_size: str, pairs: list[tuple[float, float]]) ->
             f"{statistics.mean(differences):+.2f} ± {se:.2f} |")
 
 
+def paired_report(lines: list[str]) -> list[str]:
+    """The Markdown rows of the difference paired by seed, one per finer size with two pairs or more."""
+    coarse_size = record_columns(lines)[0][0]
+    rows = ["| paired by seed | pairs | correlation | mean of fine − coarse ± standard error (°) |", "|---|---|---|---|"]
+    return rows + [paired_row(size, coarse_size, pairs) for size, pairs in read_pairs(lines).items() if len(pairs) >= 2]
+
+
 def report(tilts: dict[str, list[float]]) -> list[str]:
     """The Markdown rows of the verdicts and the size check (module docstring)."""
     rows = [f"| packing | seeds | failure tilt (°) | median | within 3° of {THESIS_TILT_DEG:g}° | "
@@ -127,11 +134,7 @@ def main(path: str) -> None:
         lines = f.read().splitlines()
     tilts, bounds = read_record(lines), read_record(lines, BOUND_CELL)
     print("\n".join(report(tilts)))
-    coarse_size = next(iter(tilts))
-    print("\n| paired by seed | pairs | correlation | mean of fine − coarse ± standard error (°) |\n|---|---|---|---|")
-    for size, pairs in read_pairs(lines).items():
-        if len(pairs) >= 2:
-            print(paired_row(size, coarse_size, pairs))
+    print("\n" + "\n".join(paired_report(lines)))
     unfinished = ", ".join(f"{size} {len(values)}" for size, values in bounds.items() if values)
     if unfinished:
         print(f"\nWith the seeds stopped before they failed ({unfinished}) at their lower bounds:\n")
