@@ -102,10 +102,11 @@ def test_a_file_without_the_record_names_what_is_missing():
         record.read_record(["| a | b |"])
 
 
-def test_the_committed_record_lists_seeds_1_to_n_with_a_coarse_tilt_for_each():
+def test_the_committed_record_lists_seeds_1_to_n_with_a_coarse_tilt_or_bound_for_each():
     with open(os.path.join(REPO, "docs", "tilting_table.md")) as f:
         lines = f.read().splitlines()
     _, rows = record.collect.record_table(lines, record.RECORD_HEADING)
     seeds = [int(row[0]) for row in rows]
     assert seeds == list(range(1, len(seeds) + 1))
-    assert len(record.read_record(lines)["R 1–4 mm"]) == len(seeds)
+    tilts, bounds = record.read_record(lines), record.read_record(lines, record.BOUND_CELL)
+    assert len(tilts["R 1–4 mm"]) + len(bounds.get("R 1–4 mm", [])) == len(seeds)
