@@ -68,8 +68,8 @@ surface y = 0, columns standing along +y, the toe at the right, the slope to the
 Calibration (the issue allows joint friction and bond strengths within the thesis' ranges;
 `bond_tensile_strength`, `main_joint_friction`, `base_joint_friction`, 0 = the tables' value).
 The ideal model's current rows use 95 kPa (at Table 5-2's 209 kPa no bond of the reconstructed
-slope breaks up to 44 deg, R 1-4 mm; at 95 kPa sixty-four R 1-2.5 mm packing seeds fail
-at 35.4 deg on average, seventy-five R 1-4 mm seeds at 36.4 deg), the random model's 65 kPa
+slope breaks up to 44 deg, R 1-4 mm; at 95 kPa sixty-five R 1-2.5 mm packing seeds fail
+at 35.4 deg on average, seventy-six R 1-4 mm seeds at 36.4 deg), the random model's 65 kPa
 (Table 5-2's 159 kPa scaled as the ideal model's 85/209, the scale of its calibration before 95 kPa,
 which meets 19 deg on average over sixteen draws). Without local damping the
 slope fails in the stage in which its most stressed bond reaches the strength, so the packing seed
