@@ -13,7 +13,8 @@ and upper phi at the common cut (a run with fewer than three points on a side: '
 failure tilt over the runs against the thesis' (``failure_tilt_line``), the pooled p, the common
 cut (its distance from the toe), the mean ± standard deviation of those toe and upper phi and in
 how many runs the toe line is the shallower, and the verdict of the rule for the thesis' two
-surfaces (``two_surfaces_verdict``). The test is two-sided: bends either way add up.
+surfaces (``two_surfaces_verdict``), and where the thesis' one run falls among ours
+(``thesis_among_draws``). The test is two-sided: bends either way add up.
 """
 import os
 import re
@@ -106,6 +107,18 @@ def two_surfaces_verdict(p: Optional[float], pairs: list) -> str:
     return f"{verdict} ({margins})"
 
 
+def thesis_among_draws(pairs: list) -> str:
+    """Where the thesis' one run falls among ours: how many of the runs split at the common cut
+    have a toe line as shallow as the thesis' toe surface or shallower, an upper line as steep as
+    its upper surface or steeper, and both. Beside the rule, not in its place: the rule asks
+    whether our mean is the thesis' value; this, whether the thesis' value is one our draws give."""
+    toe, upper = THESIS_PHI_DEG
+    shallow = [pair[0].phi_deg <= toe for pair in pairs]
+    steep = [pair[1].phi_deg >= upper for pair in pairs]
+    return (f"the thesis' run among these {len(pairs)}: toe φ ≤ {toe:g}° in {sum(shallow)}, "
+            f"upper φ ≥ {upper:g}° in {sum(steep)}, both in {sum(a and b for a, b in zip(shallow, steep))}")
+
+
 def main(runs: dict[str, dict]) -> None:
     points = [s["failure_points"] for s in runs.values()]
     p, split = analysis.pooled_split_p_value(points), analysis.pooled_split(points)
@@ -124,6 +137,7 @@ def main(runs: dict[str, dict]) -> None:
         print(f"; common cut {-split[0] * 1e3:.0f} mm from the toe; at it, over {len(pairs)} runs, toe φ "
               f"{spread([toe.phi_deg for toe, _ in pairs])}°, upper φ {spread([up.phi_deg for _, up in pairs])}°, "
               f"the toe shallower in {sum(toe.phi_deg < up.phi_deg for toe, up in pairs)}")
+        print(thesis_among_draws(pairs))
     else:
         print()
     print(f"the thesis' two surfaces ({THESIS_PHI_DEG[0]:g}° under {THESIS_PHI_DEG[1]:g}°) over these {len(runs)} runs: "

@@ -8,9 +8,13 @@ For each packing size (a column of the record): seeds, mean ± standard deviatio
 within 3 deg of the thesis' 35 deg, the mean minus 35 with its standard error and verdict
 (collect_tilting_table.mean_against), and the margin |mean - 35| + 2 standard errors that the
 verdict compares with 3 deg. Then the size check: each finer column's mean minus the first
-column's, with the verdict of collect_tilting_table.mean_difference, and the seeds per size at
-which a true difference of 0, and one equal to the measured difference, would read "yes" at the
+column's, with the verdict of collect_tilting_table.mean_difference; the chance that the seeds
+in hand read "yes" if the true difference were 0; and the seeds per size at which "yes" comes
+with a chance of YES_CHANCE if the true difference is 0, and if it is the measured one, at the
 spreads measured so far ("none" when the measured difference alone reaches the tolerance).
+A "yes" needs |difference| + 2 standard errors within the tolerance, so at the seeds where two
+standard errors just fill it (what this script printed until 2026-12-04) even a true difference
+of 0 reads "yes" with a chance of 0: a plan of runs needs that chance, not that edge.
 Last, the same difference paired by seed (the rows with a tilt in both columns): the pairs, the
 correlation of the two sizes' tilts and the mean of the per-seed differences with its standard
 error. It is printed beside the size check, not in its place: the check was set on the means of
@@ -21,7 +25,6 @@ A seed stopped before it failed (its run lost with a machine's `results/`) has a
 verdicts, and since the seeds that stand longest are the likeliest to be stopped, leaving them out
 pulls a mean down; so the same rows are printed again with them counted at their lower bounds.
 """
-import math
 import os
 import re
 import statistics
@@ -34,6 +37,7 @@ import collect_tilting_table as collect  # noqa: E402
 RECORD_HEADING = "**Every seed at 95 kPa.**"
 THESIS_TILT_DEG = 35.0  # thesis Table 5-4, the ideal model
 TILT_CELL = re.compile(r"\s*(\d+(?:\.\d+)?)\s*\(")  # "38 (190)": failure tilt (table line)
+YES_CHANCE = 0.8  # the chance of a "yes" that a plan of runs is sized for (the usual power, 80 %)
 BOUND_CELL = re.compile(r"\s*≥\s*(\d+(?:\.\d+)?)\s*\(")  # "≥ 40 (333; ...)": a seed stopped unfailed
 
 
@@ -68,15 +72,32 @@ def margin(tilts: list[float]) -> float:
     return abs(statistics.mean(tilts) - THESIS_TILT_DEG) + 2 * se
 
 
-def seeds_for_yes(fine: list[float], coarse: list[float], difference: float = 0.0) -> int | None:
-    """Seeds per size at which a true ``difference`` of the means would be "yes": |difference| plus
-    two standard errors of the difference, 2 sqrt((var_fine + var_coarse) / n), within the size
-    check's tolerance; None if |difference| alone reaches the tolerance."""
-    room = collect.SIZE_TOLERANCE_DEG - abs(difference)
+def chance_of_yes(difference: float, se: float, tolerance: float = collect.SIZE_TOLERANCE_DEG) -> float:
+    """The chance that a measured difference, normal about a true ``difference`` with standard error
+    ``se``, reads "yes" (collect.within): |measured| + 2 se within ``tolerance``."""
+    room = tolerance - 2 * se
     if room <= 0:
+        return 0.0
+    measured = statistics.NormalDist(difference, se)
+    return measured.cdf(room) - measured.cdf(-room)
+
+
+def seeds_for_yes(fine: list[float], coarse: list[float], difference: float = 0.0) -> int | None:
+    """The fewest seeds per size at which a true ``difference`` of the means reads "yes" with a
+    chance of YES_CHANCE at the two sizes' spreads; None if |difference| alone reaches the
+    tolerance, where no number of seeds gives that chance."""
+    if abs(difference) >= collect.SIZE_TOLERANCE_DEG:
         return None
     spread = statistics.variance(fine) + statistics.variance(coarse)
-    return math.ceil(spread / (room / 2) ** 2)
+    n = 2
+    while chance_of_yes(difference, (spread / n) ** 0.5) < YES_CHANCE:
+        n += 1
+    return n
+
+
+def se_of_difference(fine: list[float], coarse: list[float]) -> float:
+    """The standard error of the difference of the two means (as collect.mean_difference)."""
+    return (statistics.variance(fine) / len(fine) + statistics.variance(coarse) / len(coarse)) ** 0.5
 
 
 def read_pairs(lines: Iterable[str]) -> dict[str, list[tuple[float, float]]]:
@@ -119,13 +140,15 @@ def report(tilts: dict[str, list[float]]) -> list[str]:
                     f"{inside} | {collect.mean_against(values, THESIS_TILT_DEG)} | {margin(values):.2f} |")
     coarse_size, coarse = next(iter(tilts.items()))
     rows += ["", "| size check | difference of the means ± standard error (°) | within 2°? | "
-             "seeds per size for a yes at a difference of 0 | at the measured difference |",
-             "|---|---|---|---|---|"]
+             "chance of a yes with these seeds at a difference of 0 | "
+             f"seeds per size for a yes with a chance of {YES_CHANCE:.0%} at a difference of 0 | at the measured difference |",
+             "|---|---|---|---|---|---|"]
     for size, fine in list(tilts.items())[1:]:
         difference, verdict = collect.mean_difference(fine, coarse)
+        chance = chance_of_yes(0.0, se_of_difference(fine, coarse))
         measured = seeds_for_yes(fine, coarse, statistics.mean(fine) - statistics.mean(coarse))
-        rows.append(f"| {size} − {coarse_size} | {difference} | {verdict} | {seeds_for_yes(fine, coarse)} | "
-                    f"{'none' if measured is None else measured} |")
+        rows.append(f"| {size} − {coarse_size} | {difference} | {verdict} | {chance:.0%} | "
+                    f"{seeds_for_yes(fine, coarse)} | {'none' if measured is None else measured} |")
     return rows
 
 

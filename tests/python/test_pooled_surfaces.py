@@ -34,11 +34,12 @@ def test_the_runs_of_a_pattern_are_pooled_and_the_cut_found(tmp_path, capsys):
     assert len(rows) == 6
     at_cut = [[float(v) for v in row.split("|")[-2].split("/")] for row in rows]
     assert np.mean(at_cut, axis=0) == pytest.approx([14, 24], abs=3)  # each run's lines at the common cut
-    assert out[-3].startswith("failure tilt over 6 runs: 19.0 ± 0.0° (19–19°), 6 of 6 within 3°")
-    assert out[-2].startswith("6 runs pooled: p = 0.00")
-    cut_mm = float(re.search(r"common cut (\d+) mm from the toe", out[-2]).group(1))
+    assert out[-4].startswith("failure tilt over 6 runs: 19.0 ± 0.0° (19–19°), 6 of 6 within 3°")
+    assert out[-3].startswith("6 runs pooled: p = 0.00")
+    cut_mm = float(re.search(r"common cut (\d+) mm from the toe", out[-3]).group(1))
     assert 150 < cut_mm < 350  # within a column of the break, 250 mm
-    assert out[-2].endswith("the toe shallower in 6")
+    assert out[-3].endswith("the toe shallower in 6")
+    assert out[-2].startswith("the thesis' run among these 6: ")
 
 
 MADE_UP_RECORD = """Text.
@@ -104,3 +105,9 @@ def test_the_rule_needs_the_bend_at_5_percent_and_both_means_inside_their_bands(
     assert too_scattered.startswith("undecided (toe")
     assert pooled.two_surfaces_verdict(0.01, thesis_like[:2]).startswith("undecided")
     assert pooled.two_surfaces_verdict(None, []).startswith("undecided")
+
+
+def test_the_thesis_run_is_placed_among_the_draws_by_each_surface_and_both():
+    pairs = pairs_at([10, 14, 20, 30], [30, 20, 24, 10])  # toe <= 14: 2; upper >= 24: 2; both: 1
+    assert pooled.thesis_among_draws(pairs) == ("the thesis' run among these 4: toe φ ≤ 14° in 2, "
+                                                "upper φ ≥ 24° in 2, both in 1")

@@ -1,5 +1,8 @@
 """scripts/seed_record.py on a made-up record and on the committed one."""
+import math
 import os
+import random
+from statistics import NormalDist
 
 import pytest
 from conftest import REPO, load_script
@@ -56,21 +59,42 @@ def test_the_report_gives_each_size_its_verdict_and_the_size_check():
     rows = record.report(record.read_record(MADE_UP))
     assert rows[2] == "| coarse | 4 | 36.0 ± 4.5 | 37 | 1 | +1.0 ± 2.3: undecided | 5.55 |"
     assert rows[3] == "| fine, a gap | 3 | 35.0 ± 1.0 | 35 | 3 | +0.0 ± 0.6: yes | 1.15 |"
-    assert rows[-1] == "| fine, a gap − coarse | -1.0 ± 2.3 | undecided | 22 | 87 |"
+    assert rows[-1] == "| fine, a gap − coarse | -1.0 ± 2.3 | undecided | 0% | 59 | 175 |"
 
 
-def test_the_seeds_for_a_yes_are_the_fewest_that_read_a_zero_difference_as_yes():
+def measured_chance_of_yes(difference: float, se: float, draws: int = 20000) -> float:
+    """How often collect.within reads "yes" for measured differences drawn about ``difference``."""
+    rng = random.Random(4)
+    hits = sum(record.collect.within(rng.gauss(difference, se), se, 2.0) == "yes" for _ in range(draws))
+    return hits / draws
+
+
+@pytest.mark.parametrize("difference, se", [(0.0, 0.6), (-1.1, 0.3), (0.5, 0.5)])
+def test_the_chance_of_a_yes_is_how_often_the_size_checks_rule_says_yes(difference, se):
+    chance = record.chance_of_yes(difference, se)
+    assert 0.05 < chance < 0.99
+    assert measured_chance_of_yes(difference, se) == pytest.approx(chance, abs=0.01)  # 3 binomial sd
+
+
+def test_where_two_standard_errors_fill_the_tolerance_a_zero_difference_never_reads_yes():
+    assert record.chance_of_yes(0.0, 1.0) == 0.0
+    assert measured_chance_of_yes(0.0, 1.0) == 0.0
+
+
+def test_the_seeds_for_a_yes_are_the_fewest_that_give_a_zero_difference_its_chance():
     n = record.seeds_for_yes(FINE, COARSE)
-    assert n == 22
-    assert record.collect.within(0.0, (SPREAD / n) ** 0.5, 2.0) == "yes"
-    assert record.collect.within(0.0, (SPREAD / (n - 1)) ** 0.5, 2.0) == "undecided"
+    # at a difference of 0 the chance is P(|Z| <= (2 - 2 se) / se): 80 % at se = 2 / (2 + z_0.9)
+    se = 2 / (2 + NormalDist().inv_cdf(0.9))
+    assert n == math.ceil(SPREAD / se**2) == 59
+    assert record.chance_of_yes(0.0, (SPREAD / n) ** 0.5) >= record.YES_CHANCE
+    assert record.chance_of_yes(0.0, (SPREAD / (n - 1)) ** 0.5) < record.YES_CHANCE
 
 
-def test_at_a_measured_difference_the_seeds_leave_two_standard_errors_in_what_is_left_of_2_deg():
+def test_at_a_measured_difference_the_seeds_give_that_difference_its_chance():
     n = record.seeds_for_yes(FINE, COARSE, -1.0)
-    assert n == 87  # 2 sqrt(SPREAD / n) <= 2 - 1
-    assert record.collect.within(-1.0, (SPREAD / n) ** 0.5, 2.0) == "yes"
-    assert record.collect.within(-1.0, (SPREAD / (n - 1)) ** 0.5, 2.0) == "undecided"
+    assert n == 175
+    assert record.chance_of_yes(-1.0, (SPREAD / n) ** 0.5) >= record.YES_CHANCE
+    assert record.chance_of_yes(-1.0, (SPREAD / (n - 1)) ** 0.5) < record.YES_CHANCE
 
 
 def test_a_measured_difference_at_the_tolerance_needs_no_number_of_seeds():
