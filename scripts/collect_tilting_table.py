@@ -335,8 +335,13 @@ def mean_difference(fine: list[float], coarse: list[float]) -> tuple[str, str]:
     d = statistics.mean(fine) - statistics.mean(coarse)
     if min(len(fine), len(coarse)) < 2:
         return f"{d:+.1f}", f"undecided ({len(fine)} vs {len(coarse)} seeds)"
-    se = (statistics.variance(fine) / len(fine) + statistics.variance(coarse) / len(coarse)) ** 0.5
+    se = se_of_difference(fine, coarse)
     return f"{d:+.1f} ± {se:.1f}", within(d, se, SIZE_TOLERANCE_DEG)
+
+
+def se_of_difference(fine: list[float], coarse: list[float]) -> float:
+    """The standard error of the difference of the means of two or more ``fine`` and ``coarse``."""
+    return (statistics.variance(fine) / len(fine) + statistics.variance(coarse) / len(coarse)) ** 0.5
 
 
 def inside_band(tilts: list[float], target: float) -> int:

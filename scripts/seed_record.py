@@ -95,11 +95,6 @@ def seeds_for_yes(fine: list[float], coarse: list[float], difference: float = 0.
     return n
 
 
-def se_of_difference(fine: list[float], coarse: list[float]) -> float:
-    """The standard error of the difference of the two means (as collect.mean_difference)."""
-    return (statistics.variance(fine) / len(fine) + statistics.variance(coarse) / len(coarse)) ** 0.5
-
-
 def read_pairs(lines: Iterable[str]) -> dict[str, list[tuple[float, float]]]:
     """(first column's tilt, this column's tilt) for each seed failed at both, by finer size."""
     sizes, rows = record_columns(lines)
@@ -145,7 +140,7 @@ def report(tilts: dict[str, list[float]]) -> list[str]:
              "|---|---|---|---|---|---|"]
     for size, fine in list(tilts.items())[1:]:
         difference, verdict = collect.mean_difference(fine, coarse)
-        chance = chance_of_yes(0.0, se_of_difference(fine, coarse))
+        chance = chance_of_yes(0.0, collect.se_of_difference(fine, coarse))
         measured = seeds_for_yes(fine, coarse, statistics.mean(fine) - statistics.mean(coarse))
         rows.append(f"| {size} − {coarse_size} | {difference} | {verdict} | {chance:.0%} | "
                     f"{seeds_for_yes(fine, coarse)} | {'none' if measured is None else measured} |")
