@@ -37,8 +37,8 @@ import collect_tilting_table as collect  # noqa: E402
 RECORD_HEADING = "**Every seed at 95 kPa.**"
 THESIS_TILT_DEG = 35.0  # thesis Table 5-4, the ideal model
 TILT_CELL = re.compile(r"\s*(\d+(?:\.\d+)?)\s*\(")  # "38 (190)": failure tilt (table line)
-YES_CHANCE = 0.8  # the chance of a "yes" that a plan of runs is sized for (the usual power, 80 %)
 BOUND_CELL = re.compile(r"\s*≥\s*(\d+(?:\.\d+)?)\s*\(")  # "≥ 40 (333; ...)": a seed stopped unfailed
+YES_CHANCE = 0.8  # the chance of a "yes" that a plan of runs is sized for (the usual power, 80 %)
 
 
 def record_columns(lines: Iterable[str]) -> tuple[list[str], list[list[str]]]:
