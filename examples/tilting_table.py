@@ -118,7 +118,7 @@ onset of failure ("Based on the physical test conditions at the onset of failure
 angle was set at 19 deg", thesis §5.2, of the random model). 0 (default) stops at the first
 failure, as every table line before 145 ran. Measured: docs/tilting_table.md, "Failures that come
 to rest". The run then goes on for `post_failure_time` so the failure surface develops, and
-toppling.analysis finds it (failure points of the columns, fitted surface(s), phi, and the overall
+toppling.analyse.failure finds it (failure points of the columns, fitted surface(s), phi, and the overall
 surface's phi, one line through all the points), the zones,
 S/H and T/H, from the displacements since the last equilibrium and the cracks.
 
@@ -142,8 +142,14 @@ from yade import O
 from yade.utils import readParamsFromTable
 from yade.wrapper import ParallelBondMat, SmoothJointMat
 
-from toppling import (analysis, bonding, boundary, columns, geometry, joints, monitor, output, packing, paraview,
-                      scene, tilt_report, tilt_run, tilting)
+from toppling.analyse import failure
+from toppling.build import bonding, boundary, columns, engines, geometry, joints, packing
+from toppling.build.discs import add_discs
+from toppling.io import output, paraview, tilt_report
+from toppling.load import tilting
+from toppling.run import tilt_run
+from toppling.run.monitoring import MonitoringPoints, column_top_points
+from toppling.run.checkpoint import Checkpoint
 
 readParamsFromTable(arrangement="ideal", rmin=1e-3, rmax=4e-3, porosity=0.18, seed=1, layout_seed=1,
                     start_tilt=20.0, step=1.0, max_tilt=45.0, tilt_rate=50.0, stage_rate=10.0, damping=0.0,
@@ -172,7 +178,7 @@ TABLE_5_3 = {  # main joints (kn = ks [N/m3], mu), base joints (kn = ks, mu), ga
 THESIS = {"ideal": dict(failure_tilt_deg=35, phi_deg=[15]), "random": dict(failure_tilt_deg=19, phi_deg=[14, 24])}
 
 protocol = tilt_run.TiltProtocol.from_params(table)  # checks its own parameters
-scene.check_safety(table.timestep_safety, "timestep_safety")  # before the out folder is made
+engines.check_safety(table.timestep_safety, "timestep_safety")  # before the out folder is made
 if table.layout_seed != int(table.layout_seed) or table.layout_seed < 0:
     raise ValueError(f"layout_seed = {table.layout_seed} is invalid: it must be an integer >= 0")
 SWITCHES = {"shrink_overlaps": "0 or 1", "sliding_toe": "0 or 1", "cut_rules": "0 (every block boundary a joint) or 1",
@@ -226,8 +232,8 @@ def cross_joint_heights(layout: columns.ColumnLayout) -> dict[int, list[float]]:
 def bonded_rock(discs: list[tuple[float, float, float]], table_surface: tuple) -> list[int]:
     """The discs (x, y, r) as the model's rock in a scene with its engines: discs without a bond
     partner dropped, those within Rmax of ``table_surface`` (a segment) fixed, all bonded."""
-    ids = scene.add_discs(discs, ParallelBondMat(**COMMON, **TABLE_5_2[table.arrangement]))
-    O.engines = scene.engines(gravity=(0, -tilting.G, 0), local_damping=table.damping, safety=table.timestep_safety)
+    ids = add_discs(discs, ParallelBondMat(**COMMON, **TABLE_5_2[table.arrangement]))
+    O.engines = engines.engines(gravity=(0, -tilting.G, 0), local_damping=table.damping, safety=table.timestep_safety)
     floaters = set(bonding.remove_floaters(BOND_GAP, ids=ids))
     ids = [i for i in ids if i not in floaters]
     boundary.fix(boundary.near([table_surface], table.rmax, ids), "xy")
@@ -286,16 +292,16 @@ def column_top_bands(members: dict[int, list], depth: float) -> dict[str, list[i
     for k, discs in members.items():
         rock = bonding.rock([b.id for b in discs])
         if not rock:
-            print(f"column {analysis.column_label(k)}: no bonded discs (rmax = {table.rmax} m), not watched")
+            print(f"column {failure.column_label(k)}: no bonded discs (rmax = {table.rmax} m), not watched")
             continue
         top = max(O.bodies[i].state.pos[1] for i in rock)
-        bands[analysis.column_label(k)] = [i for i in rock if O.bodies[i].state.pos[1] > top - depth]
+        bands[failure.column_label(k)] = [i for i in rock if O.bodies[i].state.pos[1] > top - depth]
     return bands
 
 
 # ---- build or resume ----
 inputs = output.table_inputs(table)
-checkpoint = monitor.Checkpoint(table.out)
+checkpoint = Checkpoint(table.out)
 # parameters newer than some checkpoints: the value those runs had
 ADDED = {"shrink_overlaps": 0, "joint_stiffness_scale": 1.0, "fail_columns": 1, "bond_gap": 0.0, "settle_damping": 0.7,
          "stage_rate": 0.0, "layout_seed": 1, "sliding_toe": 0, "cut_rules": 1, "toe_column": 1, "joint_pieces": 0,
@@ -305,12 +311,12 @@ if checkpoint.continues(inputs, table.resume, free=tilt_run.FREE, added=ADDED):
     print(f"resuming {table.out} in its {state['phase']['name']} phase at {state['tilt']} deg "
           "(resume=0 starts afresh)", flush=True)
     state["inputs"] = inputs  # the run goes on with these (resume=1 may change any): the same command continues it
-    points = monitor.MonitoringPoints.from_dict(state["points"])
+    points = MonitoringPoints.from_dict(state["points"])
 else:
     output.discard_summary(table.out)
     layout = build()
     ids = [b.id for b in O.bodies if b is not None]
-    points = monitor.column_top_points(layout, bonding.rock(ids))  # a loose top disc may drop off the table
+    points = column_top_points(layout, bonding.rock(ids))  # a loose top disc may drop off the table
     state = tilt_run.fresh_state(inputs, layout, ids, column_top_bands(column_members(layout), 2 * table.rmax),
                                  table.start_tilt)
 series = paraview.ParaViewSeries(f"{table.out}/paraview", joints.rock_functor().joints.blockOfBody, state.get("series"))

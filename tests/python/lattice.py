@@ -4,7 +4,8 @@ import math
 from yade import O
 from yade.wrapper import ParallelBondMat
 
-from toppling import bonding, scene
+from toppling.build import bonding, engines
+from toppling.build.discs import disc
 
 R = 0.01  # disc radius of the test scenes [m]
 
@@ -25,14 +26,14 @@ def hex_lattice(rows: int, cols: int, mat, fixed_bottom: bool = False, gap: floa
         for i in range(cols):
             x = pitch * i + (pitch / 2 if j % 2 else 0)
             y = math.sqrt(3) / 2 * pitch * j
-            ids.append(O.bodies.append(scene.disc((x, y), R, mat, fixed=fixed_bottom and j == 0)))
+            ids.append(O.bodies.append(disc((x, y), R, mat, fixed=fixed_bottom and j == 0)))
     return ids
 
 
 def bonded_lattice(rows, cols, mat, gravity=(0, 0, 0), fixed_bottom=False, gap=0.0, **engine_kw) -> list[int]:
     """A hex lattice with engines and every neighbour pair bonded."""
     ids = hex_lattice(rows, cols, mat, fixed_bottom, gap)
-    O.engines = scene.engines(gravity=gravity, **engine_kw)
+    O.engines = engines.engines(gravity=gravity, **engine_kw)
     bonding.bond_within_gap(gap=gap + 1e-6 * R)
     return ids
 

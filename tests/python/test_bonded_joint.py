@@ -8,7 +8,9 @@ from lattice import R, material
 from yade import O
 from yade.wrapper import JointSetGeometry, Law2_ScGeom_SmoothJointPhys_SmoothJoint, SmoothJointMat
 
-from toppling import bonding, boundary, joints, scene
+from toppling.build import bonding, boundary, engines, joints
+from toppling.build.discs import disc
+from toppling.run.steps import run_steps
 
 SIGMA, COHESION = 2e5, 3e5  # [Pa]
 SPEED = 1e-4  # [m/s], slow: the force grows by knA v dt per step
@@ -17,8 +19,8 @@ SPEED = 1e-4  # [m/s], slow: the force grows by knA v dt per step
 def bonded_pair(friction_deg: float = 0.0):
     """Disc 0 fixed, disc 1 on top, a bonded horizontal smooth joint between them."""
     rock = material()
-    O.bodies.append([scene.disc((0, 0), R, rock, fixed=True), scene.disc((0, 2 * R), R, rock)])
-    O.engines = scene.engines(gravity=(0, 0, 0))
+    O.bodies.append([disc((0, 0), R, rock, fixed=True), disc((0, 2 * R), R, rock)])
+    O.engines = engines.engines(gravity=(0, 0, 0))
     bonding.bond_within_gap(1e-9)
     mechanics = SmoothJointMat(normalStiffness=1e11, shearStiffness=1e11, bonded=True,
                                tensileStrength=SIGMA, cohesion=COHESION, frictionAngle=math.radians(friction_deg),
@@ -33,14 +35,14 @@ def drive(velocity, max_steps=200000):
     the joint was bonded, and the force on it once it broke and moved on 100 steps."""
     boundary.move([1], velocity)
     O.bodies[1].state.blockedDOFs = "xyzXYZ"
-    law = scene.functor(Law2_ScGeom_SmoothJointPhys_SmoothJoint)
+    law = engines.functor(Law2_ScGeom_SmoothJointPhys_SmoothJoint)
     peak = 0.0
     for _ in range(max_steps):
         O.step()
         if law.breakMode:
             break
         peak = max(peak, O.forces.f(0).norm())
-    scene.run_steps(100)
+    run_steps(100)
     return peak, law, O.forces.f(0)
 
 

@@ -3,7 +3,8 @@ import pytest
 from lattice import R, bonded_lattice, material
 from yade import O
 
-from toppling import boundary, scene
+from toppling.build import boundary
+from toppling.run.steps import run_steps
 
 
 def test_discs_near_the_base_are_flagged_and_held(empty_scene):
@@ -12,7 +13,7 @@ def test_discs_near_the_base_are_flagged_and_held(empty_scene):
     assert sorted(base) == ids[:6]  # the bottom row, centres on y = 0
     boundary.fix(base, "xy")
     start = [O.bodies[i].state.pos for i in base]
-    scene.run_steps(500)
+    run_steps(500)
     assert [O.bodies[i].state.pos for i in base] == start
     assert max(abs(O.bodies[i].state.displ()[1]) for i in ids[6:]) > 0  # the rest is free
 
@@ -22,7 +23,7 @@ def test_platen_moves_at_its_velocity(empty_scene):
     top = boundary.near([((-R, 6 * R), (10 * R, 6 * R))], distance=R)
     boundary.move(top, (0, -0.01))
     y0 = [O.bodies[i].state.pos[1] for i in top]
-    scene.run_steps(100)
+    run_steps(100)
     assert [O.bodies[i].state.pos[1] - y for i, y in zip(top, y0)] == pytest.approx([-0.01 * O.time] * len(top), rel=1e-9)
 
 

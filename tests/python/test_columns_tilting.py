@@ -7,8 +7,16 @@ import pytest
 from yade import O, utils
 from yade.wrapper import ParallelBondMat
 
-from conftest import ROCK, load_script
-from toppling import analysis, columns, incline, monitor, paraview, scene, tilting
+from conftest import ROCK
+from toppling.analyse import failure
+from toppling.build import columns, engines
+from toppling.build.discs import add_discs, disc
+from toppling.load import tilting
+from toppling.models import incline
+from toppling.run.monitoring import MonitoringPoints, column_top_points
+from toppling.run.progress import Progress
+from toppling.run.checkpoint import Checkpoint
+from toppling.run.steps import run_steps
 
 
 
@@ -78,11 +86,11 @@ def test_table_failure_finds_the_hinge_plane_of_toppling_columns_and_ignores_dis
             for dx in (-0.01, 0.0, 0.01):
                 reference.append((centre + dx, y))
                 disp.append((0.001 + 0.05 * (y - hinge[k]), 0.0) if k in hinge and y > hinge[k] else (0.0, 0.0))
-        tops[analysis.column_label(k)] = len(reference) - 2  # the top disc at the column's centre
+        tops[failure.column_label(k)] = len(reference) - 2  # the top disc at the column's centre
     reference.append((layout.top_centre(1)[0], -0.05))  # off the table before the last equilibrium
     disp.append((0.0, -1.0))
     reference = np.array(reference)
-    result = analysis.table_failure(layout, reference, reference + np.array(disp), tops,
+    result = failure.table_failure(layout, reference, reference + np.array(disp), tops,
                                     lambda label: label in ("A-1", "B-2", "C-3", "D-4"), np.zeros((0, 2)), 30.0,
                                     floor=-0.01, band=0.01, least_motion=1e-5)
     assert [p.phi_deg for p in result["planes"]] == [pytest.approx(15.0, abs=0.5)]
@@ -129,7 +137,7 @@ def test_a_corner_breaking_off_a_column_top_is_not_the_column_gone(empty_scene):
 
 def _column_top(x: float, count: int) -> list[int]:
     """``count`` rock discs in a row from ``x``, 0.3 m up: a column's top band."""
-    return [O.bodies.append(scene.disc((x + 0.01 * k, 0.3), 0.004, ParallelBondMat(**ROCK))) for k in range(count)]
+    return [O.bodies.append(disc((x + 0.01 * k, 0.3), 0.004, ParallelBondMat(**ROCK))) for k in range(count)]
 
 
 def _lower(ids: list[int], dy: float) -> None:
@@ -148,7 +156,7 @@ def _along_slope_response(load) -> tuple[float, float]:
     start, peak = centre(), 0.0
     load()
     for _ in range(200):
-        scene.run_steps(5)
+        run_steps(5)
         peak = max(peak, centre() - start)
     incline.settle(0.05)
     return peak, centre() - start
@@ -215,7 +223,7 @@ def test_column_top_points_are_the_discs_nearest_the_tops_and_skip_an_empty_colu
     layout = columns.ColumnLayout(toe_x=0.15, width=0.05, heights=[0.1, 0.25, 0.2])
     discs = {(0.075, 0.24): "top of B-2", (0.075, 0.1): "", (0.03, 0.15): "", (0.02, 0.18): "top of C-3"}
     names = {O.bodies.append(utils.sphere((x, y, 0), 0.005)): name for (x, y), name in discs.items()}
-    points = monitor.column_top_points(layout, list(names))
+    points = column_top_points(layout, list(names))
     assert points.labels == ["B-2", "C-3"]
     assert [names[i] for i in points.ids] == ["top of B-2", "top of C-3"]
     assert "column A-1: no discs" in capsys.readouterr().out
@@ -223,10 +231,10 @@ def test_column_top_points_are_the_discs_nearest_the_tops_and_skip_an_empty_colu
 
 def test_checkpoint_resumes_scene_and_driver_state(empty_scene, tmp_path):
     setup = incline.build(0.1, 0.05, 0.012 / 2.5, 0.012, ROCK, 20.0)
-    points = monitor.MonitoringPoints(["A-1"], [setup.toe])
-    scene.run_steps(50)
+    points = MonitoringPoints(["A-1"], [setup.toe])
+    run_steps(50)
     points.record()
-    checkpoint = monitor.Checkpoint(str(tmp_path))
+    checkpoint = Checkpoint(str(tmp_path))
     assert not checkpoint.exists()
     checkpoint.save({"tilt": 12.5, "points": points.as_dict()})
     iteration, position = O.iter, tuple(O.bodies[setup.toe].state.pos)
@@ -234,13 +242,13 @@ def test_checkpoint_resumes_scene_and_driver_state(empty_scene, tmp_path):
     state = checkpoint.load()
     assert state["tilt"] == 12.5 and O.iter == iteration
     assert tuple(O.bodies[setup.toe].state.pos) == position
-    restored = monitor.MonitoringPoints.from_dict(json.loads(json.dumps(state["points"])))
+    restored = MonitoringPoints.from_dict(json.loads(json.dumps(state["points"])))
     restored.record()
     assert len(restored.time) == 2 and restored.total("A-1")[0] == pytest.approx(points.total("A-1")[0])
 
 
 def test_same_command_continues_its_own_checkpoint_and_no_other(empty_scene, tmp_path):
-    checkpoint = monitor.Checkpoint(str(tmp_path))
+    checkpoint = Checkpoint(str(tmp_path))
     run = {"rmin": 0.001, "arrangement": "ideal", "max_tilt": 45.0}
     assert not checkpoint.continues(run, resume=-1)  # nothing to continue
     checkpoint.save({"inputs": run})
@@ -257,62 +265,9 @@ def test_same_command_continues_its_own_checkpoint_and_no_other(empty_scene, tmp
         checkpoint.continues({**run, "shrink": 1}, resume=-1, added={"shrink": 0})
 
 
-def test_stage_speeds_names_the_column_that_moves_and_a_disc_rattling_inside_a_column_at_rest(
-        empty_scene, tmp_path, capsys):
-    """scripts/stage_speeds.py: a column's median velocity (what the stage judges) beside its fastest disc."""
-    ids = [O.bodies.append(scene.disc((0.01 * k, 0.0), 0.004, ParallelBondMat(**ROCK))) for k in range(3)]
-    for i, v in zip(ids, [(1e-3, 0, 0), (-1e-3, 0, 0), (0, 2e-3, 0)]):
-        O.bodies[i].state.vel = v
-    monitor.Checkpoint(str(tmp_path)).save({"phase": {"name": "stage", "start": 0.0}, "tilt": 22.0,
-                                            "watched_columns": ["A-1", "B-2"], "watched": [ids[:2], ids[2:]]})
-    load_script("stage_speeds").main(str(tmp_path))
-    lines = capsys.readouterr().out.splitlines()
-    assert "phase stage since t = 0.0000 s, tilt 22 deg" in lines[0]
-    assert "A-1   2 discs  median 0.00e+00 mm/s  fastest disc 1.00e+00 mm/s" in lines[1]
-    assert "B-2   1 discs  median 2.00e+00 mm/s  fastest disc 2.00e+00 mm/s" in lines[2]
-
-
-@pytest.mark.parametrize("first_stage", [False, True])
-def test_gone_columns_tells_a_corner_falling_off_from_a_column_top_toppling(empty_scene, tmp_path, first_stage):
-    """scripts/gone_columns.py on a stage where A-1's whole top moved 60 mm and two of B-2's five
-    top discs fell 0.8 m: both means pass 50 mm, only A-1's median does, so the medians alone
-    (fail_columns 2) do not fail the stage. A first stage is seen from the snapshot at the start tilt."""
-    tops = [_column_top(0.0, 5), _column_top(0.1, 5)]
-    O.engines = scene.engines(gravity=(0, 0, 0), timestepper=False)
-    series = paraview.ParaViewSeries(str(tmp_path / "paraview"))
-    series.snapshot()  # the last stage that stood, or the slope at the start tilt
-    O.dt = 0.01
-    O.step()
-    _lower(tops[0], 0.06)
-    _lower(tops[1][:2], 0.8)
-    series.snapshot()  # the failure
-    failure = {"tilt": 15.0, "outcome": "failed", "time": series.times[1], "gone": ["A-1", "B-2"]}
-    stood = [] if first_stage else [{"tilt": 13.0, "outcome": "equilibrium", "time": series.times[0]}]
-    monitor.Checkpoint(str(tmp_path)).save({
-        "inputs": {"fail_displacement": 0.05, "fail_columns": 2}, "series": series.state(),
-        "watched_columns": ["A-1", "B-2"], "watched": tops, "stages": stood + [failure]})
-    lines = load_script("gone_columns").report(str(tmp_path))
-    assert lines[0].endswith("fails at 15 deg, fail_displacement 50 mm")
-    assert lines[1] == "  A-1: mean 60.0 mm, median 60.0 mm, 5 of 5 discs past fail_displacement"
-    assert lines[2] == "  B-2: mean 320.0 mm, median 0.0 mm, 2 of 5 discs past fail_displacement"
-    assert lines[3] == "  by the medians: 1 of fail_columns 2 past fail_displacement, the stage does not fail then"
-
-
-def test_gone_columns_says_when_a_first_stage_has_no_snapshot_at_its_start(empty_scene, tmp_path):
-    """Runs older than the snapshot at the start tilt have none before their first stage's end."""
-    O.engines = scene.engines(gravity=(0, 0, 0), timestepper=False)
-    _column_top(0.0, 5)
-    series = paraview.ParaViewSeries(str(tmp_path / "paraview"))
-    series.snapshot()  # the failure
-    monitor.Checkpoint(str(tmp_path)).save({"series": series.state(), "stages": [
-        {"tilt": 11.0, "outcome": "failed", "time": series.times[0], "gone": ["A-1"]}]})
-    assert load_script("gone_columns").report(str(tmp_path)) == [
-        f"{tmp_path.name}: failed in its first stage, no snapshot at its start"]
-
-
 def test_missing_checkpoint_says_what_to_do(tmp_path):
     with pytest.raises(FileNotFoundError, match="without resume"):
-        monitor.Checkpoint(str(tmp_path)).load()
+        Checkpoint(str(tmp_path)).load()
 
 
 def test_bad_stage_criteria_are_refused():
@@ -326,13 +281,13 @@ def test_bad_stage_criteria_are_refused():
 
 def test_progress_eta_of_a_phase_of_known_length_is_its_remaining_time_at_the_current_rate(
         empty_scene, monkeypatch, capsys):
-    O.engines = scene.engines(timestepper=False)
+    O.engines = engines.engines(timestepper=False)
     wall = iter([100.0, 100.0, 110.0])  # Progress() at 100 s, lines at 100 s and 110 s
-    monkeypatch.setattr(monitor.time, "time", lambda: next(wall))
-    progress = monitor.Progress(every=5.0, energy=lambda: 1.25e-3)
+    monkeypatch.setattr("toppling.run.progress.time.time", lambda: next(wall))
+    progress = Progress(every=5.0, energy=lambda: 1.25e-3)
     progress("post", remaining_time=0.3)  # no rate yet
     O.dt = 0.01
-    scene.run_steps(2)  # 0.02 simulated s in 10 wall s: 0.1 s more take 50 s
+    run_steps(2)  # 0.02 simulated s in 10 wall s: 0.1 s more take 50 s
     progress("post", remaining_time=0.1)
     lines = capsys.readouterr().out.splitlines()
     assert lines[0].endswith("ETA ?") and lines[1].endswith("ETA 50 s")
@@ -341,13 +296,13 @@ def test_progress_eta_of_a_phase_of_known_length_is_its_remaining_time_at_the_cu
 
 def test_progress_gives_the_wall_time_to_a_stage_s_time_limit_at_the_current_rate(empty_scene, monkeypatch, capsys):
     """A stage ringing towards its time limit: the ETA to max_tilt cannot see its end, its bound can."""
-    O.engines = scene.engines(timestepper=False)
+    O.engines = engines.engines(timestepper=False)
     wall = iter([100.0, 100.0, 110.0])
-    monkeypatch.setattr(monitor.time, "time", lambda: next(wall))
-    progress = monitor.Progress(every=5.0, energy=lambda: 0.0)
+    monkeypatch.setattr("toppling.run.progress.time.time", lambda: next(wall))
+    progress = Progress(every=5.0, energy=lambda: 0.0)
     progress("stage", fraction_done=0.5, stage_bound=1.0)  # no rate yet
     O.dt = 0.01
-    scene.run_steps(2)  # 0.02 simulated s in 10 wall s: 1.5 s more take 750 s
+    run_steps(2)  # 0.02 simulated s in 10 wall s: 1.5 s more take 750 s
     progress("stage", fraction_done=0.5, stage_bound=1.5)
     lines = capsys.readouterr().out.splitlines()
     assert lines[0].endswith("ETA ?") and lines[1].endswith("ETA ? (this stage ends within 750 s)")
@@ -356,10 +311,10 @@ def test_progress_gives_the_wall_time_to_a_stage_s_time_limit_at_the_current_rat
 def test_progress_eta_of_a_resumed_run_counts_only_the_work_done_in_this_process(empty_scene, monkeypatch, capsys):
     """Resumed halfway (the earlier process did half the work): the quarter done in this one took
     100 s, so the quarter left takes 100 s, not the 20 s that half-done-in-120-s would say."""
-    O.engines = scene.engines(timestepper=False)
+    O.engines = engines.engines(timestepper=False)
     wall = iter([0.0, 20.0, 120.0])  # Progress() at 0 s, lines at 20 s and 120 s
-    monkeypatch.setattr(monitor.time, "time", lambda: next(wall))
-    progress = monitor.Progress(every=5.0, energy=lambda: 0.0)
+    monkeypatch.setattr("toppling.run.progress.time.time", lambda: next(wall))
+    progress = Progress(every=5.0, energy=lambda: 0.0)
     progress("stage", fraction_done=0.5)
     progress("stage", fraction_done=0.75)
     lines = capsys.readouterr().out.splitlines()
@@ -367,7 +322,7 @@ def test_progress_eta_of_a_resumed_run_counts_only_the_work_done_in_this_process
 
 
 def test_rate_since_is_the_change_of_total_displacement_per_second():
-    points = monitor.MonitoringPoints.from_dict({"labels": ["A-1"], "ids": [0], "reference": [(0, 0, 0)],
+    points = MonitoringPoints.from_dict({"labels": ["A-1"], "ids": [0], "reference": [(0, 0, 0)],
                                                  "time": [0.0, 1.0, 2.0, 3.0],
                                                  "x": {"A-1": [0.0, 0.03, 0.03, 0.09]},
                                                  "y": {"A-1": [0.0, 0.04, 0.04, 0.12]}})
@@ -378,7 +333,7 @@ def test_rate_since_is_the_change_of_total_displacement_per_second():
 def test_direction_is_the_total_displacement_s_y_over_x_once_the_point_has_moved():
     """Y/X of the displacement since the start (the last step's own dY/dX, -1, would be noise
     at rest); none while the point has moved less than ``still`` (a ringing top)."""
-    points = monitor.MonitoringPoints.from_dict({"labels": ["G-7"], "ids": [0], "reference": [(0, 0, 0)],
+    points = MonitoringPoints.from_dict({"labels": ["G-7"], "ids": [0], "reference": [(0, 0, 0)],
                                                  "time": [0.0, 0.1, 0.2, 0.3],
                                                  "x": {"G-7": [0.0, 2e-6, 1e-3, 2e-3]},
                                                  "y": {"G-7": [0.0, -3e-6, 0.0, -1e-3]}})
@@ -390,7 +345,7 @@ def test_direction_is_the_total_displacement_s_y_over_x_once_the_point_has_moved
 def test_kinetic_energy_above_the_floor_leaves_out_a_disc_fallen_below_it(empty_scene):
     """Closed form: 1/2 m v^2 + 1/2 I w^2 of the discs above the floor, the scene's total when
     none is below it; the progress line prints that energy."""
-    up, down = scene.add_discs([(0, 0.1, 0.01), (0, -0.1, 0.01)], ParallelBondMat(**ROCK))
+    up, down = add_discs([(0, 0.1, 0.01), (0, -0.1, 0.01)], ParallelBondMat(**ROCK))
     for i, (v, w) in zip((up, down), ((0.3, 2.0), (5.0, 0.0))):
         O.bodies[i].state.vel, O.bodies[i].state.angVel = (v, 0, 0), (0, 0, w)
     s = O.bodies[up].state
@@ -406,7 +361,7 @@ def test_a_failure_comes_to_rest_once_what_moves_has_dropped_off_the_table(empty
     reaches, the failure is still moving at the time limit (None)."""
     still, falling = (O.bodies.append(utils.sphere((x, 0.05, 0), 0.005, fixed=fixed))
                       for x, fixed in ((0.0, True), (0.1, False)))
-    O.engines = scene.engines()
+    O.engines = engines.engines()
     O.dt = 1e-5
     criteria = tilting.StageCriteria(chunk=0.01, rest_speed=1e-3)
     came_to_rest = tilting.run_arrest([[still], [falling]], floor, criteria, arrest_time=0.3)

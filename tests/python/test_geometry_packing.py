@@ -6,7 +6,7 @@ import pytest
 from yade import pack
 from yade.wrapper import JointSetGeometry
 
-from toppling import geometry, packing
+from toppling.build import geometry, packing
 
 L_SHAPE = [(0, 0), (2, 0), (2, 1), (1, 1), (1, 2), (0, 2)]
 

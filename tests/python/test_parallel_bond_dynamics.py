@@ -6,7 +6,10 @@ import pytest
 from lattice import R, bonded_lattice, leapfrog_energy, material
 from yade import O
 
-from toppling import bonding, boundary, packing, scene, tilt_run
+from toppling.build import bonding, boundary, engines, packing
+from toppling.build.discs import add_discs
+from toppling.run import tilt_run
+from toppling.run.steps import run_steps
 
 
 def shake(ids, speed=0.01, seed=1):
@@ -30,12 +33,12 @@ def test_undamped_lattice_conserves_energy_with_auto_timestep(empty_scene, gap, 
     # Frictionless contacts: Coulomb slip at touching, barely loaded contacts would dissipate.
     ids = bonded_lattice(8, 8, material(bondYoung=2e10, frictionAngle=0.0), gap=gap, safety=safety)
     shake(ids)
-    law = scene.bond_law()
+    law = engines.bond_law()
     bonds = law.countBonds(1)
     e0 = leapfrog_energy(law)
     drift = 0.0
     for _ in range(100):
-        scene.run_steps(99)
+        run_steps(99)
         drift = max(drift, abs(leapfrog_energy(law) - e0) / e0)
     assert O.iter == 10_001
     assert law.countBonds(1) == bonds > 100 and not law.breakMode
@@ -49,31 +52,31 @@ def test_save_load_continues_identically(empty_scene, tmp_path, timestepper):
                          timestepper=timestepper)
     if not timestepper:
         O.dt = 2e-7
-    scene.run_steps(200)
+    run_steps(200)
     saved = str(tmp_path / "mid.yade.gz")
     O.save(saved)
-    scene.run_steps(300)
+    run_steps(300)
     reference = [O.bodies[i].state.pos for i in ids]
-    reference_breaks = list(scene.bond_law().breakTime)
+    reference_breaks = list(engines.bond_law().breakTime)
     O.load(saved)
-    scene.run_steps(300)
+    run_steps(300)
     assert len(reference_breaks) > 20
     if timestepper:
         # YADE's collider rebuilds its interaction order after O.load, so new contacts are summed
         # in another order: equal to round-off, not bitwise (also so with YADE's own laws).
         assert max((O.bodies[i].state.pos - r).norm() for i, r in zip(ids, reference)) < 1e-12 * R
-        assert len(scene.bond_law().breakTime) == len(reference_breaks)
+        assert len(engines.bond_law().breakTime) == len(reference_breaks)
     else:
         assert [O.bodies[i].state.pos for i in ids] == reference
-        assert list(scene.bond_law().breakTime) == reference_breaks
+        assert list(engines.bond_law().breakTime) == reference_breaks
 
 
 def test_unstable_run_stops_with_a_message(empty_scene):
     ids = bonded_lattice(4, 4, material(), timestepper=False)
     O.dt = 1e-3  # ~100x the critical time step
     shake(ids)
-    scene.run_steps(5000)
-    law = scene.bond_law()
+    run_steps(5000)
+    law = engines.bond_law()
     assert law.unstable
     assert O.iter < 50
     assert all(abs(O.bodies[i].state.pos[0]) < 1.0 for i in ids)  # stopped before flying apart
@@ -110,7 +113,7 @@ def test_bad_inherited_values_set_later_stop_the_run(empty_scene, attribute, val
     setattr(mat, attribute, value)  # YADE's own setter for ElastMat/FrictMat attributes
     O.interactions.clear()
     O.dt = 1e-7
-    scene.run_steps(100)
+    run_steps(100)
     assert O.iter < 100
 
 
@@ -118,25 +121,25 @@ def test_bonding_after_settling_is_stress_free_and_limits_the_time_step(empty_sc
     # Thesis §3.2: discs settle under gravity first, then the bonds are installed.
     mat = material(bondYoung=2e10)
     bonded_lattice(6, 6, mat, gravity=(0, -9.81, 0), fixed_bottom=True, local_damping=0.5)
-    law = scene.bond_law()
+    law = engines.bond_law()
     for i in list(O.interactions):  # start unbonded: remove the lattice's bonds
         O.interactions.erase(i.id1, i.id2)
-    scene.run_steps(500)
+    run_steps(500)
     dt_before = O.dt
     bonds = bonding.bond_within_gap(1e-6 * R)
     assert bonds == law.countBonds(1) > 50
     assert sum(bonding.intact_bonds(b.id) for b in O.bodies) == 2 * bonds
     assert all(i.phys.bondNormalForce == 0 and i.phys.bondMoment == 0 for i in O.interactions if i.phys.bondState == 1)
     assert O.dt <= 0.5 * law.criticalTimeStep() * (1 + 1e-12) < dt_before  # bonds 20x stiffer than contacts
-    scene.run_steps(2000)
+    run_steps(2000)
     assert not law.unstable and not law.breakMode
 
 
 def test_rock_is_the_discs_held_by_two_bonds_not_a_loose_pair(empty_scene):
     """A chain of four bonded discs beside a bonded pair: the pair and the chain's ends are not rock."""
     mat = material()
-    ids = scene.add_discs([(2 * R * k, 0.0, R) for k in range(4)] + [(2 * R * k, 10 * R, R) for k in range(2)], mat)
-    O.engines = scene.engines()
+    ids = add_discs([(2 * R * k, 0.0, R) for k in range(4)] + [(2 * R * k, 10 * R, R) for k in range(2)], mat)
+    O.engines = engines.engines()
     O.step()
     assert bonding.bond_within_gap(1e-6 * R, ids) == 3 + 1
     assert bonding.rock(ids) == ids[1:3]
@@ -154,19 +157,19 @@ def test_breaks_that_free_a_loose_disc_are_told_from_cracks_in_the_rock(empty_sc
     h = math.sqrt(3) * R
     triangles = [(0.0, 20 * R, R), (-2 * R, 20 * R, R), (-R, 20 * R - h, R),
                  (2 * R, 20 * R, R), (4 * R, 20 * R, R), (3 * R, 20 * R + h, R)]
-    ids = scene.add_discs(chain + [(3 * R, h, R), (0.0, 10 * R, R), (2 * R, 10 * R, R)] + triangles, mat)
+    ids = add_discs(chain + [(3 * R, h, R), (0.0, 10 * R, R), (2 * R, 10 * R, R)] + triangles, mat)
     end0, fixed1, fixed2, end3, knob, pair_a, pair_b = ids[:7]
     for i in (fixed1, fixed2, *ids[7:10]):
         O.bodies[i].state.blockedDOFs = "xyzXYZ"
-    O.engines = scene.engines(gravity=(0, 0, 0))
+    O.engines = engines.engines(gravity=(0, 0, 0))
     O.step()
     assert bonding.bond_within_gap(1e-6 * R, ids) == 3 + 2 + 1 + 3 + 3 + 1
     for disc, direction in ((end0, (-1, 0)), (end3, (1, 0)), (knob, (0, 1)), (pair_a, (-1, 0)), (pair_b, (1, 0))):
         boundary.move([disc], (0.01 * direction[0], 0.01 * direction[1], 0))
     boundary.move(ids[10:], (0.01, 0, 0))
-    law = scene.bond_law()
+    law = engines.bond_law()
     while len(law.breakMode) < 6 and O.iter < 100000:  # all but the fixed discs' bonds and the triangles' own
-        scene.run_steps(100)
+        run_steps(100)
     assert len(law.breakMode) == 6
     assert sorted(min(pair) for pair in bonding.bonds_before_breaks()) == [1, 1, 1, 1, 2, 3]
     tie = [n for n, pair in enumerate(zip(law.breakId1, law.breakId2)) if set(pair) == {ids[7], ids[10]}]
@@ -184,13 +187,13 @@ def test_a_bond_installed_over_an_overlap_takes_the_contact_force_in_tension(emp
     discs = [(0.0, 0.0, R), (2 * R - u, 0.0, R)]
     if shrink:
         discs = packing.shrink_overlaps(discs)
-    ids = scene.add_discs(discs, material())
+    ids = add_discs(discs, material())
     O.bodies[ids[0]].state.blockedDOFs = "xyzXYZ"
     O.bodies[ids[1]].state.blockedDOFs = "yzXYZ"
-    O.engines = scene.engines(gravity=(0, 0, 0), local_damping=0.7)
+    O.engines = engines.engines(gravity=(0, 0, 0), local_damping=0.7)
     O.step()
     assert bonding.bond_within_gap(1e-6 * R, ids) == 1
-    scene.run_steps(3000)
+    run_steps(3000)
     phys = O.interactions[ids[0], ids[1]].phys
     kb = phys.bondKn * phys.bondArea
     expected = 0.0 if shrink else -phys.contactKn * kb * u / (phys.contactKn + kb)
@@ -201,11 +204,11 @@ def test_a_bond_installed_over_an_overlap_takes_the_contact_force_in_tension(emp
 def test_set_local_damping_changes_the_integrators_damping(empty_scene):
     """A free disc falling from rest under local damping d accelerates at g (1 - d) (YADE's
     local damping takes d |F| against the velocity): v = g (1 - d) t after the change."""
-    (disc,) = scene.add_discs([(0.0, 0.0, R)], material())
-    O.engines = scene.engines(gravity=(0, -9.81, 0), local_damping=0.7, timestepper=False)
+    (disc,) = add_discs([(0.0, 0.0, R)], material())
+    O.engines = engines.engines(gravity=(0, -9.81, 0), local_damping=0.7, timestepper=False)
     O.dt = 1e-4
-    scene.set_local_damping(0.25)
-    scene.run_steps(1000)
+    engines.set_local_damping(0.25)
+    run_steps(1000)
     assert O.bodies[disc].state.vel[1] == pytest.approx(-9.81 * 0.75 * O.time, rel=1e-3)
     with pytest.raises(ValueError, match=r"local_damping = 1.0 is invalid: it must be in \[0, 1\)"):
-        scene.set_local_damping(1.0)
+        engines.set_local_damping(1.0)

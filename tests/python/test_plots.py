@@ -3,7 +3,8 @@ import numpy as np
 import pytest
 from matplotlib import image
 
-from toppling import analysis, plots
+from toppling.analyse import failure
+from toppling.io import plots
 
 
 def test_around_widens_the_box_by_a_share_of_its_larger_side():
@@ -35,7 +36,7 @@ def test_the_overall_surface_is_drawn_dashed_beside_the_two_it_splits_into(tmp_p
     """The dog-leg of a toe segment along the table and a 45 degree one: the overall line runs
     between them and darkens pixels neither of them does."""
     points = [(-0.05 * k, 0.05 * max(0, k - 3)) for k in range(8)]
-    planes, overall = analysis.fit_failure_surface(points), analysis.overall_surface(points)
+    planes, overall = failure.fit_failure_surface(points), failure.overall_surface(points)
     centres = np.array([(0.5, 0.5)])
     view = (-0.4, 0.05, -0.05, 0.3)
 

@@ -8,7 +8,7 @@ import re
 import numpy as np
 import pytest
 from conftest import load_script
-from toppling import analysis
+from toppling.analyse import failure
 
 pooled = load_script("pooled_surfaces")
 THESIS = {"failure_tilt_deg": 19.0}
@@ -90,7 +90,7 @@ def test_the_committed_record_names_each_table_line_once_and_every_row_has_point
 
 def pairs_at(toe_phi, upper_phi):
     """Runs' toe and upper lines at a common cut with these angles."""
-    line = lambda phi: analysis.Plane(phi, -math.tan(math.radians(phi)), 0.0, (-0.5, 0.0))  # noqa: E731
+    line = lambda phi: failure.Plane(phi, -math.tan(math.radians(phi)), 0.0, (-0.5, 0.0))  # noqa: E731
     return [(line(a), line(b)) for a, b in zip(toe_phi, upper_phi)]
 
 

@@ -7,7 +7,10 @@ from lattice import R, material
 from yade import O, Quaternion
 from yade.wrapper import JointSetGeometry, Law2_ScGeom_SmoothJointPhys_SmoothJoint, SmoothJointMat
 
-from toppling import bonding, joints, scene, tilting
+from toppling.build import bonding, engines, joints
+from toppling.build.discs import disc
+from toppling.load import tilting
+from toppling.run.steps import run_steps
 
 G = tilting.G
 ROWS_SLAB, ROWS_BLOCK, COLS = 3, 5, 24
@@ -25,13 +28,13 @@ def block_on_slab(friction_deg: float, smooth: bool = True, segment: bool = Fals
             if j >= ROWS_SLAB and not 4 <= i < 12:
                 continue
             x, y = 2 * R * i + (R if j % 2 else 0), math.sqrt(3) * R * j
-            b = O.bodies.append(scene.disc((x, y), R, rock, fixed=j < ROWS_SLAB))
+            b = O.bodies.append(disc((x, y), R, rock, fixed=j < ROWS_SLAB))
             if j >= ROWS_SLAB:
                 block.append(b)
-    O.engines = scene.engines(gravity=(0, -G, 0), local_damping=0.5)
+    O.engines = engines.engines(gravity=(0, -G, 0), local_damping=0.5)
     if not smooth:
         bonding.bond_within_gap(1e-6 * R, ids=block)
-        scene.run_steps(2000)
+        run_steps(2000)
         return block, None
     bonding.bond_within_gap(1e-6 * R)
     joint = (JointSetGeometry(dip=0, segmentStarts=[(-R, Y_JOINT)], segmentEnds=[(2 * R * COLS, Y_JOINT)])
@@ -40,7 +43,7 @@ def block_on_slab(friction_deg: float, smooth: bool = True, segment: bool = Fals
                                shearStiffness=rock.bondYoung / (2 * R), frictionAngle=math.radians(friction_deg))
     system = joints.install_joints([(joint, mechanics)], lo=(-R, -R), hi=(2 * R * COLS, 10 * R * ROWS_BLOCK),
                                    pieces=pieces)
-    scene.run_steps(2000)  # settle on the joint, damped
+    run_steps(2000)  # settle on the joint, damped
     return block, system
 
 
@@ -59,7 +62,7 @@ def acceleration(ids, steps=4000, samples=40) -> float:
     springs, so a velocity difference between two instants would measure the ringing too."""
     times, xs = [], []
     for _ in range(samples):
-        scene.run_steps(steps // samples)
+        run_steps(steps // samples)
         times.append(O.time)
         xs.append(mean_x(ids))
     return 2 * numpy.polyfit(times, xs, 2)[0]
@@ -93,14 +96,14 @@ def test_friction_holds_below_and_slides_above_friction_angle(empty_scene, phi):
     block, _ = block_on_slab(friction_deg=phi)
     start = [O.bodies[i].state.pos[0] for i in block]
     tilt(phi - 2)
-    scene.run_steps(4000)
+    run_steps(4000)
     creep = max(abs(O.bodies[i].state.pos[0] - x) for i, x in zip(block, start))
     assert creep < 0.01 * R  # elastic shear only
     tilt(phi + 4)
     # The sudden tilt is a step load: the block rings on its joint springs for the first few
     # thousand steps, which moves a parabola fitted then by up to 1.5 % either way depending on
     # the settling history alone (measured); the closed form is the sliding that follows.
-    scene.run_steps(4000)
+    run_steps(4000)
     a = math.radians(phi + 4)
     expected = G * (math.sin(a) - math.tan(math.radians(phi)) * math.cos(a))
     assert acceleration(block) == pytest.approx(expected, rel=0.005)
@@ -168,7 +171,7 @@ def test_without_pieces_a_block_sliding_on_segments_interlocks(empty_scene):
     block, _ = block_on_slab(friction_deg=10, segment=True, pieces=False)
     tilt(20)
     start = mean_x(block)
-    scene.run_steps(64000)
+    run_steps(64000)
     assert mean_x(block) - start < 3 * R
 
 

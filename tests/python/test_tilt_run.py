@@ -10,7 +10,14 @@ from yade import O
 from yade.wrapper import ParallelBondMat
 
 from conftest import ROCK, load_script
-from toppling import bonding, columns, geometry, incline, monitor, packing, scene, tilt_report, tilt_run, tilting
+from toppling.build import bonding, columns, engines, geometry, packing
+from toppling.build.discs import disc
+from toppling.io import tilt_report
+from toppling.load import tilting
+from toppling.models import incline
+from toppling.run import tilt_run
+from toppling.run.monitoring import MonitoringPoints
+from toppling.run.checkpoint import Checkpoint
 
 RMIN, RMAX = 0.012 / 2.5, 0.012
 FRICTION_DEG = math.degrees(math.atan(0.4))  # 21.8 deg: stages at 17, 19, 21 stand, 23 slides
@@ -41,8 +48,8 @@ def fresh_run(tmp_path, p: tilt_run.TiltProtocol, criteria: tilting.StageCriteri
     layout = columns.ColumnLayout(toe_x=0.15, width=0.1, heights=[0.05])  # the block as column A-1
     state = tilt_run.fresh_state({"case": "block"}, layout, setup.block + setup.base, {"A-1": setup.block},
                                  p.start_tilt)
-    points = monitor.MonitoringPoints(["A-1"], [setup.toe])
-    return tilt_run.TiltRun(p, criteria, monitor.Checkpoint(str(tmp_path)), state, points, Series(), RMIN, RMAX)
+    points = MonitoringPoints(["A-1"], [setup.toe])
+    return tilt_run.TiltRun(p, criteria, Checkpoint(str(tmp_path)), state, points, Series(), RMIN, RMAX)
 
 
 def cantilever_run(tmp_path, p: tilt_run.TiltProtocol, tensile_strength: float, shrink: bool = True) -> tilt_run.TiltRun:
@@ -53,22 +60,22 @@ def cantilever_run(tmp_path, p: tilt_run.TiltProtocol, tensile_strength: float, 
     discs = packing.pack_polygon(geometry.region(section), rmin, rmax, 0.2).discs
     discs = packing.shrink_overlaps(discs) if shrink else discs
     mat = ParallelBondMat(frictionAngle=0.5, bondTensileStrength=tensile_strength, bondCohesion=1e12, **ROCK)
-    base = [O.bodies.append(scene.disc((x, y), r, mat, fixed=True)) for x, y, r in discs if y < 0]
-    column = [O.bodies.append(scene.disc((x, y), r, mat)) for x, y, r in discs if y >= 0]
-    O.engines = scene.engines(gravity=(0, -tilting.G, 0), local_damping=0.0)
+    base = [O.bodies.append(disc((x, y), r, mat, fixed=True)) for x, y, r in discs if y < 0]
+    column = [O.bodies.append(disc((x, y), r, mat)) for x, y, r in discs if y >= 0]
+    O.engines = engines.engines(gravity=(0, -tilting.G, 0), local_damping=0.0)
     floaters = set(bonding.remove_floaters(0.05 * rmin, ids=column))
     column = [i for i in column if i not in floaters]
     bonding.bond_within_gap(0.05 * rmin)
     state = tilt_run.fresh_state({"case": "cantilever"}, columns.ColumnLayout(toe_x=0.06, width=b, heights=[h]),
                                  column + base, {"A-1": column}, p.start_tilt)
-    points = monitor.MonitoringPoints(["A-1"], [max(column, key=lambda i: O.bodies[i].state.pos[1])])
-    return tilt_run.TiltRun(p, CRITERIA, monitor.Checkpoint(str(tmp_path)), state, points, Series(), rmin, rmax)
+    points = MonitoringPoints(["A-1"], [max(column, key=lambda i: O.bodies[i].state.pos[1])])
+    return tilt_run.TiltRun(p, CRITERIA, Checkpoint(str(tmp_path)), state, points, Series(), rmin, rmax)
 
 
 def resumed_run(tmp_path, p: tilt_run.TiltProtocol) -> tilt_run.TiltRun:
-    checkpoint = monitor.Checkpoint(str(tmp_path))
+    checkpoint = Checkpoint(str(tmp_path))
     state = checkpoint.load()
-    return tilt_run.TiltRun(p, CRITERIA, checkpoint, state, monitor.MonitoringPoints.from_dict(state["points"]),
+    return tilt_run.TiltRun(p, CRITERIA, checkpoint, state, MonitoringPoints.from_dict(state["points"]),
                             Series(state["series"]), RMIN, RMAX)
 
 
@@ -192,12 +199,12 @@ def test_a_column_that_toppled_off_alone_does_not_fail_a_later_stage_with_anothe
     table line 288's first run). The base, then watched alone, is judged on: a stage goes on
     with fewer columns than fail_columns."""
     setup = incline.build(0.1, 0.05, RMIN, RMAX, ROCK, FRICTION_DEG)
-    faller = O.bodies.append(scene.disc((-1.0, 1.0), RMIN, O.bodies[setup.block[0]].material))
+    faller = O.bodies.append(disc((-1.0, 1.0), RMIN, O.bodies[setup.block[0]].material))
     layout = columns.ColumnLayout(toe_x=0.15, width=0.1, heights=[0.05])
     state = tilt_run.fresh_state({"case": "block"}, layout, setup.block + setup.base + [faller],
                                  {"A-1": setup.block, "B-2": [faller], "C-3": setup.base}, 17.0)
     run = tilt_run.TiltRun(protocol(step=4.0, max_tilt=29.0), dataclasses.replace(CRITERIA, fail_columns=2),
-                           monitor.Checkpoint(str(tmp_path)), state, monitor.MonitoringPoints(["A-1"], [setup.toe]),
+                           Checkpoint(str(tmp_path)), state, MonitoringPoints(["A-1"], [setup.toe]),
                            Series(), RMIN, RMAX)
     assert run.run() is None
     assert [(s["tilt"], s["outcome"], s["gone"]) for s in run.state["stages"]] == [

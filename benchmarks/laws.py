@@ -1,0 +1,112 @@
+"""Benchmark: our parallel-bond law against YADE's JCFpm and Cundall-Strack on one packing.
+
+Builds one bonded 2D packing (triangular lattice of ~20 000 discs with radii jittered by
+up to 10 %, bottom row fixed, gravity) and times, in the same YADE process and on the same
+discs, the step with each law: µs per step and ns per interaction-step. Run it through the
+launcher; it re-runs itself with 1 and 2 threads and prints a Markdown table:
+
+    ./yade -x -n scripts/benchmark_laws.py            # all thread counts
+    ./yade -x -n -j2 scripts/benchmark_laws.py worker # one thread count, JSON on stdout
+"""
+import json
+import math
+import os
+import random
+import subprocess
+import sys
+import time
+
+N_SIDE = int(os.environ.get("BENCH_SIDE", "141"))  # 141 x 141 = 19 881 discs
+STEPS = int(os.environ.get("BENCH_STEPS", "200"))
+REPEATS = 3
+R = 1e-3
+
+
+def lattice(seed=1):
+    rng = random.Random(seed)
+    for j in range(N_SIDE):
+        for i in range(N_SIDE):
+            yield (2 * R * i + (R if j % 2 else 0), math.sqrt(3) * R * j, R * rng.uniform(0.9, 1.0) + 1e-9 * R, j == 0)
+
+
+def build(law_name):
+    from yade import O, utils
+    from yade import wrapper as w
+    from toppling.build import bonding, discs
+
+    O.reset()
+    if law_name == "ParallelBond":
+        mat = w.ParallelBondMat(young=1e9, density=2700, bondYoung=1e9, frictionAngle=0.5)
+        ip2, law2 = w.Ip2_ParallelBondMat_ParallelBondMat_ParallelBondPhys(), w.Law2_ScGeom_ParallelBondPhys_ParallelBond()
+    elif law_name == "JCFpm":
+        mat = w.JCFpmMat(young=1e9, density=2700, frictionAngle=0.5, tensileStrength=1e7, cohesion=1e7)
+        ip2, law2 = w.Ip2_JCFpmMat_JCFpmMat_JCFpmPhys(cohesiveTresholdIteration=1), w.Law2_ScGeom_JCFpmPhys_JointedCohesiveFrictionalPM()
+    else:
+        mat = w.FrictMat(young=1e9, density=2700, frictionAngle=0.5)
+        ip2, law2 = w.Ip2_FrictMat_FrictMat_FrictPhys(), w.Law2_ScGeom_FrictPhys_CundallStrack()
+    O.materials.append(mat)
+    for x, y, r, fixed in lattice():
+        # Cundall-Strack has no bonds: enlarge its discs slightly so that every neighbour pair touches.
+        b = utils.sphere((x, y, 0), 1.0005 * R if law_name == "CundallStrack" else r, material=mat, fixed=fixed)
+        discs.set_disc_mass(b, 1.0)
+        if not fixed:
+            b.state.blockedDOFs = discs.PLANE_DOFS
+        O.bodies.append(b)
+    factor = 1.2 if law_name == "JCFpm" else 1.0  # JCFpm bonds what it detects at step 0
+    bo1, ig2 = w.Bo1_Sphere_Aabb(aabbEnlargeFactor=factor), w.Ig2_Sphere_Sphere_ScGeom(interactionDetectionFactor=factor)
+    # Each law runs at its own stable time step (GlobalStiffnessTimeStepper), as a user would.
+    O.engines = [w.ForceResetter(), w.InsertionSortCollider([bo1]), w.InteractionLoop([ig2], [ip2], [law2]),
+                 w.GlobalStiffnessTimeStepper(timestepSafetyCoefficient=0.5, timeStepUpdateInterval=100),
+                 w.NewtonIntegrator(gravity=(0, -9.81, 0), damping=0.1)]
+    if law_name == "ParallelBond":
+        bonding.bond_within_gap(gap=0.25 * R)
+    O.run(1, True)
+    bo1.aabbEnlargeFactor = ig2.interactionDetectionFactor = 1.0
+
+
+def measure(law_name):
+    from yade import O
+    build(law_name)
+    O.run(50, True)  # warm-up
+    seconds = math.inf
+    for _ in range(REPEATS):  # best of several: the machine's other load only slows runs down
+        start, first = time.perf_counter(), O.iter
+        O.run(STEPS, True)
+        if O.iter != first + STEPS:
+            raise RuntimeError(f"{law_name}: the run stopped early (unstable?) at iteration {O.iter}")
+        seconds = min(seconds, (time.perf_counter() - start) / STEPS)
+    interactions = sum(1 for i in O.interactions if i.isReal)
+    return {"law": law_name, "discs": len(O.bodies), "interactions": interactions, "dt": O.dt,
+            "us_per_step": seconds * 1e6, "ns_per_interaction_step": seconds * 1e9 / interactions}
+
+
+def worker():
+    from yade import O
+    threads = O.numThreads if hasattr(O, "numThreads") else int(os.environ.get("OMP_NUM_THREADS", "1"))
+    rows = [dict(measure(name), threads=threads) for name in ("ParallelBond", "JCFpm", "CundallStrack")]
+    print("BENCHMARK-JSON " + json.dumps(rows))
+
+
+def main():
+    repo = os.environ["TOPPLING_REPO"]  # set by the ./yade launcher
+    rows = []
+    for threads in (1, 2):
+        proc = subprocess.run([os.path.join(repo, "yade"), "-x", "-n", "-j", str(threads),
+                               os.path.join(repo, "scripts", "benchmark_laws.py"), "worker"],
+                              capture_output=True, text=True, check=True)
+        line = next(l for l in proc.stdout.splitlines() if l.startswith("BENCHMARK-JSON "))
+        rows += [dict(r, threads=threads) for r in json.loads(line[len("BENCHMARK-JSON "):])]
+    out = os.path.join(repo, "results", "benchmark_laws")
+    os.makedirs(out, exist_ok=True)
+    with open(os.path.join(out, "summary.json"), "w") as f:
+        json.dump(rows, f, indent=2)
+    print("| law | threads | discs | interactions | µs/step | ns/interaction-step | vs JCFpm |")
+    print("|---|---|---|---|---|---|---|")
+    for r in rows:
+        jcfpm = next(x for x in rows if x["law"] == "JCFpm" and x["threads"] == r["threads"])
+        print(f"| {r['law']} | {r['threads']} | {r['discs']} | {r['interactions']} | {r['us_per_step']:.0f} | "
+              f"{r['ns_per_interaction_step']:.0f} | {r['ns_per_interaction_step'] / jcfpm['ns_per_interaction_step']:.2f} |")
+
+
+if __name__ == "__main__":
+    worker() if sys.argv[-1] == "worker" else main()

@@ -1,0 +1,102 @@
+"""The engine list of a bonded-disc scene and access to its parts (laws, damping, time step)."""
+from __future__ import annotations
+
+import math
+from typing import Sequence
+
+from yade import O
+from yade.wrapper import (Bo1_Box_Aabb, Bo1_Sphere_Aabb, Bo1_Wall_Aabb, ForceResetter,
+                          GlobalStiffnessTimeStepper, Ig2_Box_Sphere_ScGeom,
+                          Ig2_Sphere_Sphere_ScGeom, Ig2_Wall_Sphere_ScGeom,
+                          InsertionSortCollider, InteractionLoop,
+                          Ip2_ParallelBondMat_ParallelBondMat_ParallelBondPhys,
+                          Law2_ScGeom_ParallelBondPhys_ParallelBond,
+                          Law2_ScGeom_SmoothJointPhys_SmoothJoint, NewtonIntegrator)
+
+
+def engines(gravity=(0.0, -9.81, 0.0), local_damping: float = 0.0,
+            timestepper: bool = True, safety: float = 0.5, extra: Sequence = ()) -> list:
+    """The engine list of a bonded-disc scene: collider, parallel-bond and smooth-joint laws, Newton.
+
+    ``local_damping`` is NewtonIntegrator's non-viscous damping (PFC's local damping);
+    ``timestepper`` adds GlobalStiffnessTimeStepper, which sees bond stiffness.
+    """
+    check_damping(local_damping)
+    check_safety(safety)
+    loop = [
+        ForceResetter(),
+        InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Wall_Aabb(), Bo1_Box_Aabb()]),
+        InteractionLoop(
+            [Ig2_Sphere_Sphere_ScGeom(), Ig2_Wall_Sphere_ScGeom(), Ig2_Box_Sphere_ScGeom()],
+            [Ip2_ParallelBondMat_ParallelBondMat_ParallelBondPhys()],
+            [Law2_ScGeom_ParallelBondPhys_ParallelBond(), Law2_ScGeom_SmoothJointPhys_SmoothJoint()]),
+    ]
+    if timestepper:
+        loop.append(GlobalStiffnessTimeStepper(timestepSafetyCoefficient=safety,
+                                               timeStepUpdateInterval=100))
+    loop.append(NewtonIntegrator(gravity=gravity, damping=local_damping))
+    return loop + list(extra)
+
+
+def check_damping(damping: float, name: str = "local_damping") -> None:
+    """Raise ValueError unless ``damping`` (NewtonIntegrator's local damping, called ``name``
+    where the user set it) is in [0, 1)."""
+    if not 0 <= damping < 1:
+        raise ValueError(f"{name} = {damping} is invalid: it must be in [0, 1)")
+
+
+def set_local_damping(damping: float) -> None:
+    """Set the scene's NewtonIntegrator local damping (e.g. one value to settle, another to load)."""
+    check_damping(damping)
+    newtons = [e for e in O.engines if isinstance(e, NewtonIntegrator)]
+    if not newtons:
+        raise LookupError("no NewtonIntegrator in O.engines; build them with toppling.build.engines.engines()")
+    newtons[0].damping = damping
+
+
+def check_safety(safety: float, name: str = "safety") -> None:
+    """Raise ValueError unless ``safety`` (GlobalStiffnessTimeStepper's coefficient of
+    sqrt(2 m/K), called ``name`` where the user set it) is in (0, 1]."""
+    if not 0 < safety <= 1:
+        raise ValueError(f"{name} = {safety} is invalid: it must be in (0, 1]")
+
+
+def limit_timestep() -> None:
+    """Make GlobalStiffnessTimeStepper's time step account for stress-free bonds.
+
+    It skips interactions that carry no force, so right after bonding it would ignore the new
+    bonds; the law's criticalTimeStep() counts them. Called by toppling.bonding.
+    """
+    steppers = [e for e in O.engines if isinstance(e, GlobalStiffnessTimeStepper)]
+    if not steppers:
+        return
+    stepper = steppers[0]
+    dt = stepper.timestepSafetyCoefficient * bond_law().criticalTimeStep()
+    if math.isinf(dt):
+        return
+    stepper.defaultDt = dt  # used while nothing carries force (e.g. the first step)
+    stepper.previousDt = min(stepper.previousDt, dt)
+    O.dt = min(O.dt, dt) if O.iter > 0 else dt
+
+
+def functor(cls, dispatcher: str = "lawDispatcher"):
+    """The scene's InteractionLoop functor of class ``cls`` (from its ``dispatcher``)."""
+    for engine in O.engines:
+        if isinstance(engine, InteractionLoop):
+            for f in getattr(engine, dispatcher).functors:
+                if isinstance(f, cls):
+                    return f
+    raise LookupError(f"no {cls.__name__} in O.engines; build them with toppling.build.engines.engines()")
+
+
+BREAK_MODES = {2: "tension", 3: "shear"}  # the bond law's breakMode codes
+
+
+def bond_law() -> Law2_ScGeom_ParallelBondPhys_ParallelBond:
+    """The scene's parallel-bond Law2 functor (holds the break records)."""
+    return functor(Law2_ScGeom_ParallelBondPhys_ParallelBond)
+
+
+def broken_bonds() -> int:
+    """How many bonds have broken so far (in either mode)."""
+    return len(bond_law().breakMode)

@@ -1,0 +1,90 @@
+"""Install pre-existing joints: bonded pairs that straddle a joint become smooth joints."""
+from __future__ import annotations
+
+import math
+from typing import Sequence
+
+from yade import O, utils
+from yade.wrapper import (Ip2_ParallelBondMat_ParallelBondMat_ParallelBondPhys,
+                          JointSetGeometry, JointSystem, SmoothJointMat)
+
+from toppling.build.engines import functor, limit_timestep
+
+
+def rock_functor() -> Ip2_ParallelBondMat_ParallelBondMat_ParallelBondPhys:
+    """The Ip2 that decides between rock (parallel bond) and joint (smooth joint)."""
+    return functor(Ip2_ParallelBondMat_ParallelBondMat_ParallelBondPhys, "physDispatcher")
+
+
+def is_persistent(geometry: JointSetGeometry) -> bool:
+    """A set whose joints run through the whole section (no rock bridges, not explicit)."""
+    return not geometry.segmentStarts and geometry.bridgeLength == 0
+
+
+def joint_normal(geometry: JointSetGeometry) -> tuple[float, float, float]:
+    """Unit normal of a set's joint lines, from its dip (explicit segments: the set's ``dip``)."""
+    a = math.radians(geometry.dip)
+    return (-math.sin(a), math.cos(a), 0.0)
+
+
+def install_joints(sets: Sequence[tuple[JointSetGeometry, SmoothJointMat]], lo, hi,
+                   pieces: bool = True) -> JointSystem:
+    """Install joint sets (geometry, mechanics) in the current scene, within the box lo..hi.
+
+    Every interaction whose centre-to-centre segment crosses a joint loses its bond and gets
+    the smooth joint of that set (thesis §3.2.4), oriented by the geometry's dip. Discs are
+    given the block they lie in, so contacts that form later between blocks are smooth joints
+    too: with ``pieces`` the piece of rock (``assign_pieces``), else only the band of every
+    persistent set, which leaves a block that slides along a joint of explicit segments or
+    with rock bridges to make plain, interlocking disc contacts with the rock it slides over.
+    Returns the scene's JointSystem.
+    """
+    ip2 = rock_functor()
+    system = ip2.joints if ip2.joints is not None else JointSystem()
+    materials = list(system.jointMaterials)
+    pairs = []
+    for geometry, mechanics in sets:
+        mechanics.normal = joint_normal(geometry)
+        materials.append(O.materials.append(mechanics))
+        for i, j in system.crossingPairs(geometry, lo, hi):
+            system.addPair(i, j, len(materials) - 1)
+            pairs.append((i, j))
+    system.jointMaterials = materials
+    system.assignBlocks([g for g, _ in sets if is_persistent(g)])
+    ip2.joints = system
+    for i, j in pairs:  # the Ip2 now makes them smooth joints
+        O.interactions.erase(i, j)
+        utils.createInteraction(i, j)
+    if pieces:
+        assign_pieces(system)
+    limit_timestep()
+    return system
+
+
+def assign_pieces(system: JointSystem) -> None:
+    """Split the blocks of ``system`` into pieces of rock: discs joined by a chain of intact
+    bonds within one block. Joints are what cut bonds, so a piece is bounded by joints. A disc
+    without an intact bond in its block is a piece of its own: its new contacts are joints."""
+    blocks = list(system.blockOfBody)
+    root = list(range(len(blocks)))
+
+    def find(i: int) -> int:
+        while root[i] != i:
+            root[i] = root[root[i]]
+            i = root[i]
+        return i
+
+    for I in O.interactions:
+        if I.isReal and getattr(I.phys, "bondState", 0) == 1 and blocks[I.id1] == blocks[I.id2] >= 0:
+            root[find(I.id1)] = find(I.id2)
+    labels: dict[int, int] = {}
+    system.blockOfBody = [labels.setdefault(find(i), len(labels)) if b >= 0 else -1 for i, b in enumerate(blocks)]
+
+
+def cut_bonds(geometry: JointSetGeometry, lo, hi) -> int:
+    """Only unbond the pairs across a joint: they go on as plain frictional disc contacts
+    (what smooth joints replace; for comparison). Returns the number of pairs cut."""
+    pairs = JointSystem().crossingPairs(geometry, lo, hi)
+    for i, j in pairs:
+        O.interactions.erase(i, j)  # the collider makes them plain contacts again
+    return len(pairs)

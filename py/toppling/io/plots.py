@@ -1,0 +1,112 @@
+"""PNG figures every slope case writes: the slope coloured by displacement with cracks and the
+fitted failure surface, the loading history, and monitoring-point histories (Fig 5-21 style)."""
+from __future__ import annotations
+
+from typing import Optional, Sequence
+
+from toppling.io import output  # first: it selects matplotlib's headless backend
+
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+from matplotlib.collections import EllipseCollection  # noqa: E402
+from toppling.analyse.failure import Plane
+from toppling.run.monitoring import MonitoringPoints
+
+
+def slope(out: str, name: str, centres: np.ndarray, radii: Sequence[float], displacement: np.ndarray,
+          cracks: np.ndarray, modes: Sequence[int], planes: Sequence[Plane] = (), toe=(0.0, 0.0),
+          title: str = "", limits: Optional[tuple[float, float, float, float]] = None,
+          overall: Optional[Plane] = None) -> str:
+    """Discs at ``centres`` coloured by |displacement| [mm], cracks (x tension, + shear), the
+    failure planes (given in the slope frame of upright columns: x - toe_x, y) and, dashed, the
+    ``overall`` surface through all the failure points where they split into planes. ``limits``
+    (xmin, xmax, ymin, ymax, e.g. from around()) fixes the view, so that discs that fell off
+    the model do not shrink it to a dot; the figure says how many discs it leaves out."""
+    fig, ax = output.figure("x (m)", "y (m)", title)
+    radii = np.asarray(radii)
+    magnitude = 1e3 * np.linalg.norm(displacement, axis=1)
+    discs = EllipseCollection(2 * radii, 2 * radii, np.zeros_like(radii), units="xy", offsets=centres,
+                              transOffset=ax.transData, array=magnitude, cmap="viridis")
+    if magnitude.size and magnitude.max() > 0:  # a few escaped discs must not wash out the field
+        discs.set_clim(0, max(np.percentile(magnitude, 99), 1e-9))
+    ax.add_collection(discs)
+    fig.colorbar(discs, ax=ax, label="displacement (mm), 99th percentile at the top", extend="max")
+    cracks, modes = np.asarray(cracks).reshape(-1, 2), np.asarray(modes)
+    for mode, marker, colour, label in ((2, "x", "red", "tensile crack"), (3, "+", "blue", "shear crack")):
+        sel = modes == mode
+        if sel.any():
+            ax.plot(cracks[sel, 0], cracks[sel, 1], marker, color=colour, ms=3, ls="none", label=label)
+    lines = [(plane, "k-", 2, f"failure surface {k + 1}") for k, plane in enumerate(planes)]
+    lines += [(overall, "k--", 1, "overall surface")] if overall is not None else []
+    for plane, style, width, what in lines:
+        x = np.array(plane.x_range)
+        ax.plot(toe[0] + x, toe[1] + plane.intercept + plane.slope * x, style, lw=width,
+                label=f"{what}: phi = {plane.phi_deg:.1f} deg")
+    ax.set_aspect("equal")
+    ax.autoscale_view()
+    if limits is not None:
+        ax.set_xlim(*limits[:2])
+        ax.set_ylim(*limits[2:])
+        left_out = outside(centres, limits)
+        if left_out:
+            ax.text(0.01, 0.01, f"{left_out} discs outside the view", transform=ax.transAxes, fontsize=7)
+    if len(planes) or len(cracks):
+        ax.legend(loc="upper right", fontsize=7)
+    return output.save_figure(fig, out, name)
+
+
+def around(centres: np.ndarray, margin: float) -> tuple[float, float, float, float]:
+    """The bounding box (xmin, xmax, ymin, ymax) of ``centres`` widened by ``margin`` times
+    its larger side on every side."""
+    lo, hi = np.min(centres, axis=0), np.max(centres, axis=0)
+    pad = margin * float(np.max(hi - lo))
+    return float(lo[0] - pad), float(hi[0] + pad), float(lo[1] - pad), float(hi[1] + pad)
+
+
+def outside(centres: np.ndarray, limits: tuple[float, float, float, float]) -> int:
+    """How many ``centres`` lie outside ``limits`` (xmin, xmax, ymin, ymax)."""
+    x, y = np.asarray(centres).reshape(-1, 2).T
+    inside = (limits[0] <= x) & (x <= limits[1]) & (limits[2] <= y) & (y <= limits[3])
+    return int((~inside).sum())
+
+
+def tilt_history(out: str, energy: Sequence[tuple[float, float, float]], points: MonitoringPoints,
+                 failure_tilt: Optional[float]) -> str:
+    """Tilt, largest monitoring-point displacement and kinetic energy against simulated time
+    (``failure_tilt`` None: the slope stood throughout)."""
+    t, tilt, ek = (np.array(c) for c in zip(*energy))
+    title = f"failure at {failure_tilt:.1f} deg" if failure_tilt is not None else f"standing at {tilt.max():.1f} deg"
+    fig, ax = output.figure("simulated time (s)", "tilt (deg)", f"Tilting, {title}")
+    ax.plot(t, tilt, "k-", label="tilt")
+    right = ax.twinx()
+    right.semilogy(t, np.maximum(ek, 1e-12), "r-", label="kinetic energy (J)")
+    biggest = np.max([points.total(label) for label in points.labels], axis=0)
+    right.semilogy(points.time, np.maximum(1e3 * biggest, 1e-6), "b-", label="largest column-top displacement (mm)")
+    right.legend(loc="upper left", fontsize=7)
+    return output.save_figure(fig, out, "tilt_history")
+
+
+def monitoring(out: str, points: MonitoringPoints, labels: Sequence[str], still: float = 1e-4,
+               normal_dydx: Optional[float] = None) -> str:
+    """X, Y, the direction Y/X (the thesis' dY/dX, drawn once a point has moved ``still`` [m])
+    and total displacement of the labelled points against time (Fig 5-21); ``normal_dydx`` draws
+    the direction of the main joints' normal, which a toppling column's top passes."""
+    fig, axes = plt.subplots(2, 2, figsize=(10, 7))
+    t = np.array(points.time)
+    for label in labels:
+        x, y = 1e3 * np.array(points.x[label]), 1e3 * np.array(points.y[label])
+        axes[0, 0].plot(t, x, label=label)
+        axes[0, 1].plot(t, y, label=label)
+        axes[1, 0].plot(t, points.direction(label, still), label=label)
+        axes[1, 1].plot(t, np.hypot(x, y), label=label)
+    for ax, ylabel in zip(axes.flat, ("X (mm)", "Y (mm)", f"dY/dX = Y/X (once moved {1e3 * still:g} mm)",
+                                      "total displacement (mm)")):
+        ax.set_xlabel("simulated time (s)")
+        ax.set_ylabel(ylabel)
+        ax.grid(True, alpha=0.3)
+    if normal_dydx is not None:
+        normal = axes[1, 0].axhline(normal_dydx, color="r", ls="--", lw=1, label="normal to the main joints")
+        axes[1, 0].legend(handles=[normal], fontsize=7, loc="lower left")
+    axes[1, 0].set_ylim(-5, 5)
+    axes[0, 0].legend(fontsize=7)
+    return output.save_figure(fig, out, "monitoring_points")

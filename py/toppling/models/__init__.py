@@ -1,0 +1,1 @@
+"""Parametrised scenes: the tilting table, a block on an incline, a compression specimen."""

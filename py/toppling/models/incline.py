@@ -1,0 +1,83 @@
+"""A block of bonded discs on a fixed base across one horizontal joint, on a tilting table.
+
+The scene of the block-on-incline and tilt tests (thesis §4.4): base and block are packed as
+one polygon and cut by the joint at y = 0 (thesis Fig 3-4), so the interface is as rough as
+the packing; tilt with ``toppling.load.tilting.set_tilt`` (gravity rotated, thesis Fig 5-7).
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from yade import O
+from yade.wrapper import JointSetGeometry, ParallelBondMat, SmoothJointMat
+
+from toppling.build import bonding, engines, geometry, joints, packing
+from toppling.build.discs import disc
+from toppling.load import tilting
+from toppling.run.steps import run_steps
+
+
+@dataclass
+class BlockOnBase:
+    block: list          # ids of the block's discs
+    base: list           # ids of the fixed base's discs
+    toe: int             # the block's disc nearest its downhill base corner
+    b: float
+    h: float
+
+
+BOND_GAP = 0.05  # x Rmin
+
+
+def build(b: float, h: float, rmin: float, rmax: float, rock: dict, joint_friction_deg: float,
+          smooth: bool = True, porosity: float = 0.2, seed: int = 1) -> BlockOnBase:
+    """Pack, bond (unbreakable bonds) and joint a b x h block on a base; gravity vertical.
+
+    ``rock``: ParallelBondMat parameters. The joint has the bonds' stiffness per area and
+    friction ``joint_friction_deg``; ``smooth=False`` only cuts the bonds across it (plain
+    disc contacts with that friction).
+    """
+    width, thickness, x0 = 2 * b + 2 * h, 10 * rmax, 0.5 * b  # room downhill (+x) to slide or topple
+    section = [(0, -thickness), (width, -thickness), (width, 0), (x0 + b, 0), (x0 + b, h), (x0, h), (x0, 0), (0, 0)]
+    discs = packing.pack_polygon(geometry.region(section), rmin, rmax, porosity, seed=seed).discs
+    mat = ParallelBondMat(frictionAngle=math.radians(joint_friction_deg), bondTensileStrength=1e12,
+                          bondCohesion=1e12, **rock)
+    base = [O.bodies.append(disc((x, y), r, mat, fixed=True)) for x, y, r in discs if y < 0]
+    block = [O.bodies.append(disc((x, y), r, mat)) for x, y, r in discs if y >= 0]
+    O.engines = engines.engines(gravity=(0, -tilting.G, 0), local_damping=0.0)
+    floaters = set(bonding.remove_floaters(BOND_GAP * rmin, ids=block))
+    block = [i for i in block if i not in floaters]
+    bonding.bond_within_gap(BOND_GAP * rmin)
+    interface, box = JointSetGeometry(origin=(0, 0), dip=0), ((-1, -1), (width + 1, h + 1))
+    if smooth:
+        stiffness = mat.bondYoung / (2 * rmin)
+        mechanics = SmoothJointMat(normalStiffness=stiffness, shearStiffness=stiffness / mat.bondKnKs,
+                                   frictionAngle=math.radians(joint_friction_deg))
+        joints.install_joints([(interface, mechanics)], *box)
+    else:
+        joints.cut_bonds(interface, *box)
+    toe = min(block, key=lambda i: (O.bodies[i].state.pos - (x0 + b, 0, 0)).norm())
+    return BlockOnBase(block, base, toe, b, h)
+
+
+def settle(seconds: float, damping: float = 0.5) -> None:
+    """Run ``seconds`` with NewtonIntegrator's local damping, then switch it off again."""
+    newton = O.engines[-1]
+    newton.damping = damping
+    run_steps(max(1, int(seconds / O.dt)))
+    newton.damping = 0.0
+
+
+def toe_translation(scene_: BlockOnBase, x_start: float) -> float:
+    """Displacement of the block's toe along the incline [m]."""
+    return O.bodies[scene_.toe].state.pos[0] - x_start
+
+
+def rotation_deg(ids) -> float:
+    """Mean rotation of the discs about z [deg]."""
+    total = 0.0
+    for i in ids:
+        axis, angle = O.bodies[i].state.ori.toAxisAngle()
+        total += angle * axis[2]
+    return math.degrees(total / len(ids))

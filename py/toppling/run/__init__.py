@@ -1,0 +1,1 @@
+"""Running a scene: steps in this thread, staged tilting runs, checkpoints that resume, progress lines, monitoring points."""

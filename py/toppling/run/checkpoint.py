@@ -1,0 +1,69 @@
+"""Checkpoints that resume a run."""
+from __future__ import annotations
+
+import json
+import os
+from typing import Any, Optional, Sequence
+
+from yade import O
+
+
+class Checkpoint:
+    """``<folder>/checkpoint.yade.bz2`` (the scene, by ``O.save``) + ``checkpoint.json`` (the
+    driver's own state: where in its loop it was)."""
+
+    def __init__(self, folder: str):
+        os.makedirs(folder, exist_ok=True)
+        self.scene_path = os.path.join(folder, "checkpoint.yade.bz2")
+        self.state_path = os.path.join(folder, "checkpoint.json")
+
+    def exists(self) -> bool:
+        return os.path.exists(self.scene_path) and os.path.exists(self.state_path)
+
+    def save(self, state: dict[str, Any]) -> None:
+        # Both written aside and then moved into place: a run killed while saving (a long run is
+        # stopped at any moment) leaves the previous checkpoint whole.
+        scene_tmp = self.scene_path.replace("checkpoint.", "checkpoint.saving.")
+        O.save(scene_tmp)
+        state_tmp = self.state_path + ".tmp"
+        with open(state_tmp, "w") as f:
+            json.dump(state, f)
+        os.replace(scene_tmp, self.scene_path)
+        os.replace(state_tmp, self.state_path)
+
+    def continues(self, inputs: dict[str, Any], resume: int, free: Sequence[str] = (),
+                  added: Optional[dict[str, Any]] = None) -> bool:
+        """Whether a run with parameters ``inputs`` continues this checkpoint rather than starting
+        afresh: ``resume`` = 1 yes, 0 no, -1 if there is one, so that running the same command
+        again continues a stopped run. With -1 the checkpoint's ``"inputs"`` must be the same
+        (apart from the ``free`` ones, which may change between a run and its continuation):
+        a run with other parameters stops rather than overwrite another run's results. ``added``
+        names parameters newer than older checkpoints, with the value those runs had."""
+        if resume not in (-1, 0, 1):
+            raise ValueError(f"resume = {resume} is invalid: it must be -1 (continue a run with the same "
+                             "parameters), 0 (start afresh) or 1 (continue the checkpoint)")
+        if resume != -1:
+            return bool(resume)
+        if not self.exists():
+            return False
+        with open(self.state_path) as f:
+            saved = {**(added or {}), **json.load(f).get("inputs", {})}
+
+        def fixed(d: dict[str, Any]) -> dict[str, Any]:
+            return {k: v for k, v in json.loads(json.dumps(d)).items() if k not in free}  # as stored
+
+        then, now = fixed(saved), fixed(inputs)
+        differ = sorted(k for k in then.keys() | now.keys() if then.get(k) != now.get(k))
+        if differ:
+            changes = ", ".join(f"{k} {then.get(k)!r} there, {now.get(k)!r} here" for k in differ)
+            raise ValueError(f"{os.path.dirname(self.state_path)} holds the checkpoint of a run with other "
+                             f"parameters ({changes}): resume=0 starts afresh and discards it, resume=1 "
+                             "continues it with these parameters, or choose another out folder")
+        return True
+
+    def load(self) -> dict[str, Any]:
+        if not self.exists():
+            raise FileNotFoundError(f"no checkpoint in {os.path.dirname(self.scene_path)}: run without resume first")
+        O.load(self.scene_path)
+        with open(self.state_path) as f:
+            return json.load(f)
