@@ -51,7 +51,7 @@ def failed(record):
 
 while O.time < table.duration and not (history and failed(history[-1])):
     run_steps(200)
-    history.append((O.time, incline.toe_translation(setup, x_start), incline.rotation_deg(setup.block)))
+    history.append((O.time, incline.toe_translation(setup, x_start), incline.mean_spin_deg(setup.block)))
     check_stable()
 
 _, translation, rotation = history[-1]

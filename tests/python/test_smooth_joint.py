@@ -50,7 +50,7 @@ def block_on_slab(friction_deg: float, smooth: bool = True, segment: bool = Fals
 def tilt(alpha_deg: float) -> None:
     """Tilt the table by rotating gravity; no damping from here on."""
     tilting.set_tilt(alpha_deg)
-    O.engines[-1].damping = 0.0
+    engines.set_local_damping(0.0)
 
 
 def mean_x(ids) -> float:
@@ -113,7 +113,7 @@ def test_joint_normal_turns_with_rotating_blocks(empty_scene):
     # Spin the whole block-on-slab assembly rigidly by 30° about the origin (kinematically): the
     # joint normal must turn by 30° with it, and a rigid motion must load no joint.
     block, system = block_on_slab(friction_deg=20)
-    O.engines[-1].gravity = (0, 0, 0)
+    engines.newton().gravity = (0, 0, 0)
     spin_rate, turn = 10.0, math.radians(30)
     for b in O.bodies:
         b.state.blockedDOFs = "xyzXYZ"

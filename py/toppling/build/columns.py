@@ -96,16 +96,15 @@ class ColumnLayout:
         return [phase + i * length for i in range(max(count, 0)) if phase + i * length > 0]
 
     def cross_joints(self, cuts: Mapping[int, Sequence[float]], block_length: float,
-                     sliding_toe: bool = False, every_cut: bool = False) -> JointSetGeometry:
+                     every_cut: bool = False) -> JointSetGeometry:
         """Joints across columns k at heights ``cuts[k]`` [m], as explicit segments spanning each
         column, kept only where the piece above leans on the downhill neighbour over at least a
         quarter of ``block_length`` and leaves no top piece shorter than half of it. A piece
         standing free above its neighbour, touching it only at a corner, or a thin sliver on
         top slides off at atan(mu) of its joint long before the column topples (measured: the
         top block of column G-7, touching F-6 over 8 mm, and a 4 cm sliver on G-7 both slid at
-        28 deg). With ``sliding_toe`` the toe column (nothing downhill to lean on) keeps its
-        cuts: there that sliding is the slope's sliding zone, not a block lost early. With
-        ``every_cut`` every cut inside a column is a joint: the blocks as stacked, rules off."""
+        28 deg). With ``every_cut`` every cut inside a column is a joint: the blocks as stacked,
+        rules off."""
         if block_length <= 0:
             raise ValueError(f"block_length = {block_length} is invalid: it must be > 0 m")
         starts, ends = [], []
@@ -114,7 +113,7 @@ class ColumnLayout:
             for y in heights:
                 leans = y <= self.supported_height(k) - 0.25 * block_length
                 kept = leans and self.heights[k - 1] - y >= 0.5 * block_length
-                if 0 < y < self.heights[k - 1] and (kept or every_cut or (sliding_toe and k == 1)):
+                if 0 < y < self.heights[k - 1] and (kept or every_cut):
                     starts.append((left, y))
                     ends.append((right, y))
         return JointSetGeometry(dip=0, segmentStarts=starts, segmentEnds=ends)

@@ -14,7 +14,10 @@ from yade.wrapper import (Bo1_Box_Aabb, Bo1_Sphere_Aabb, Bo1_Wall_Aabb, ForceRes
                           Law2_ScGeom_SmoothJointPhys_SmoothJoint, NewtonIntegrator)
 
 
-def engines(gravity=(0.0, -9.81, 0.0), local_damping: float = 0.0,
+G = 9.81  # [m/s2]
+
+
+def engines(gravity=(0.0, -G, 0.0), local_damping: float = 0.0,
             timestepper: bool = True, safety: float = 0.5, extra: Sequence = ()) -> list:
     """The engine list of a bonded-disc scene: collider, parallel-bond and smooth-joint laws, Newton.
 
@@ -45,13 +48,18 @@ def check_damping(damping: float, name: str = "local_damping") -> None:
         raise ValueError(f"{name} = {damping} is invalid: it must be in [0, 1)")
 
 
+def newton() -> NewtonIntegrator:
+    """The scene's NewtonIntegrator (it holds gravity and the local damping)."""
+    for engine in O.engines:
+        if isinstance(engine, NewtonIntegrator):
+            return engine
+    raise LookupError("no NewtonIntegrator in O.engines; build them with toppling.build.engines.engines()")
+
+
 def set_local_damping(damping: float) -> None:
     """Set the scene's NewtonIntegrator local damping (e.g. one value to settle, another to load)."""
     check_damping(damping)
-    newtons = [e for e in O.engines if isinstance(e, NewtonIntegrator)]
-    if not newtons:
-        raise LookupError("no NewtonIntegrator in O.engines; build them with toppling.build.engines.engines()")
-    newtons[0].damping = damping
+    newton().damping = damping
 
 
 def check_safety(safety: float, name: str = "safety") -> None:

@@ -8,20 +8,19 @@ from typing import Callable, Optional, Sequence
 import numpy as np
 from yade import O
 
+from toppling.build.engines import G, newton
 from toppling.run.steps import check_stable, run_checked, run_steps
-
-G = 9.81
 
 
 def set_tilt(alpha_deg: float) -> None:
     """Tilt the table by ``alpha_deg`` towards +x (the toe side): gravity (g sin a, -g cos a)."""
     a = math.radians(alpha_deg)
-    O.engines[-1].gravity = (G * math.sin(a), -G * math.cos(a), 0)
+    newton().gravity = (G * math.sin(a), -G * math.cos(a), 0)
 
 
 def current_tilt() -> float:
     """The tilt [deg] that the scene's gravity stands for (inverse of set_tilt)."""
-    gx, gy = tuple(O.engines[-1].gravity)[:2]
+    gx, gy = tuple(newton().gravity)[:2]
     return math.degrees(math.atan2(gx, -gy))
 
 

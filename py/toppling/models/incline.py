@@ -14,7 +14,6 @@ from yade.wrapper import JointSetGeometry, ParallelBondMat, SmoothJointMat
 
 from toppling.build import bonding, engines, geometry, joints, packing
 from toppling.build.discs import disc
-from toppling.load import tilting
 from toppling.run.steps import run_steps
 
 
@@ -45,7 +44,7 @@ def build(b: float, h: float, rmin: float, rmax: float, rock: dict, joint_fricti
                           bondCohesion=1e12, **rock)
     base = [O.bodies.append(disc((x, y), r, mat, fixed=True)) for x, y, r in discs if y < 0]
     block = [O.bodies.append(disc((x, y), r, mat)) for x, y, r in discs if y >= 0]
-    O.engines = engines.engines(gravity=(0, -tilting.G, 0), local_damping=0.0)
+    O.engines = engines.engines(gravity=(0, -engines.G, 0), local_damping=0.0)
     floaters = set(bonding.remove_floaters(BOND_GAP * rmin, ids=block))
     block = [i for i in block if i not in floaters]
     bonding.bond_within_gap(BOND_GAP * rmin)
@@ -63,10 +62,9 @@ def build(b: float, h: float, rmin: float, rmax: float, rock: dict, joint_fricti
 
 def settle(seconds: float, damping: float = 0.5) -> None:
     """Run ``seconds`` with NewtonIntegrator's local damping, then switch it off again."""
-    newton = O.engines[-1]
-    newton.damping = damping
+    engines.set_local_damping(damping)
     run_steps(max(1, int(seconds / O.dt)))
-    newton.damping = 0.0
+    engines.set_local_damping(0.0)
 
 
 def toe_translation(scene_: BlockOnBase, x_start: float) -> float:
@@ -74,7 +72,7 @@ def toe_translation(scene_: BlockOnBase, x_start: float) -> float:
     return O.bodies[scene_.toe].state.pos[0] - x_start
 
 
-def rotation_deg(ids) -> float:
+def mean_spin_deg(ids) -> float:
     """Mean rotation of the discs about z [deg]."""
     total = 0.0
     for i in ids:

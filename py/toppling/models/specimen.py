@@ -71,7 +71,7 @@ def compress(spec: Specimen, velocity: float, local_damping: float = 0.0, post_p
     ``post_peak_drop`` x peak after the peak, or the strain reaches ``max_strain``."""
     if velocity <= 0:
         raise ValueError(f"velocity = {velocity} is invalid: it must be > 0 m/s")
-    O.engines[-1].damping = local_damping
+    engines.set_local_damping(local_damping)
     boundary.move(spec.top, (0, -velocity))
     boundary.move(spec.bottom, (0, velocity))
     curve, t0 = Curve(), O.time
