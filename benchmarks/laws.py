@@ -92,7 +92,7 @@ def main():
     rows = []
     for threads in (1, 2):
         proc = subprocess.run([os.path.join(repo, "yade"), "-x", "-n", "-j", str(threads),
-                               os.path.join(repo, "scripts", "benchmark_laws.py"), "worker"],
+                               os.path.join(repo, "benchmarks", "laws.py"), "worker"],
                               capture_output=True, text=True, check=True)
         line = next(l for l in proc.stdout.splitlines() if l.startswith("BENCHMARK-JSON "))
         rows += [dict(r, threads=threads) for r in json.loads(line[len("BENCHMARK-JSON "):])]

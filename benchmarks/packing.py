@@ -1,7 +1,7 @@
 """Benchmark: fill a square with ~20 000 discs (R 1-2.5 mm) and report time and quality.
 
-    ./yade -x -n scripts/benchmark_packing.py          # porosity 0.18
-    BENCH_POROSITY=0.16 ./yade -x -n scripts/benchmark_packing.py
+    ./yade -x -n benchmarks/packing.py          # porosity 0.18
+    BENCH_POROSITY=0.16 ./yade -x -n benchmarks/packing.py
 """
 import json
 import math

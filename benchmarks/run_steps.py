@@ -1,6 +1,6 @@
 """Wall time per step of toppling.run.steps.run_steps against O.run(n, True), in runs of n steps.
 
-    ./yade -x -n -j1 scripts/benchmark_run_steps.py
+    ./yade -x -n -j1 benchmarks/run_steps.py
 
 A row of 20 discs (cheap steps, so that any cost of driving them shows): O.run(n, True) waits
 for YADE's worker thread by polling every 40 ms, run_steps steps in the calling thread.

@@ -1,7 +1,7 @@
 """Benchmark: what a tilting-table run costs at a given packing.
 
-Builds the tilting-table model of examples/tilting_table.py (its own build(), so the scene is
-the one the example runs) at the radii given, lets gravity load the joints (the time step
+Builds the tilting-table model (toppling.models.tilting_table, the calibrated ideal case's
+parameters of examples/params.py) at the radii given, lets gravity load the joints (the time step
 sees them once they carry force), then times the step: best of BENCH_REPEATS (3). Prints a row:
 discs, interactions, dt, steps per second and simulated seconds per wall hour, which with the
 2-3 s a run simulates says how long a packing takes.
@@ -10,25 +10,27 @@ With ``z_order`` ``both`` it builds the scene twice in the same process, discs i
 order (``z_order`` 0) and in Z-order (1), times them in turn (0, 1, 0, 1: the machine's load
 drifts alike over both), and prints the speed-up of Z-order over the packer's order.
 
-    ./yade -x -n -j1 scripts/benchmark_tilting_table.py [rmin rmax [arrangement [joint_stiffness_scale [z_order]]]]
+    ./yade -x -n -j1 benchmarks/tilting_table.py [rmin rmax [arrangement [joint_stiffness_scale [z_order]]]]
 """
 import os
 import sys
 import time
+from types import SimpleNamespace
 
 from yade import O
 
-sys.path.insert(0, os.path.join(os.environ["TOPPLING_REPO"], "scripts"))  # set by the ./yade launcher
-from tilting_table_model import definitions  # noqa: E402
+from examples import params
+from toppling.models import tilting_table
 
 WARM_UP, STEPS, REPEATS = 2000, 2000, int(os.environ.get("BENCH_REPEATS", "3"))
 
 
 def build(rmin: float, rmax: float, arrangement: str, joint_stiffness_scale: float, z_order: int) -> None:
-    """The example's scene, without running it: its build()."""
+    """The model's scene, without running it."""
     O.reset()
-    definitions(arrangement=f"'{arrangement}'", rmin=rmin, rmax=rmax, joint_stiffness_scale=joint_stiffness_scale,
-                z_order=z_order)["build"]()
+    case = SimpleNamespace(**{**params.TILTING_TABLE_IDEAL, "arrangement": arrangement, "rmin": rmin, "rmax": rmax,
+                              "joint_stiffness_scale": joint_stiffness_scale, "z_order": z_order})
+    tilting_table.from_params(case, params).build()
 
 
 def time_steps() -> dict:

@@ -6,5 +6,5 @@ repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 "$repo/scripts/setup.sh"
 cd "$repo"
 for example in free_fall restitution cantilever bond_strength block_on_incline tilt_slide; do
-  ./yade -x -n "examples/validation/$example.py"
+  ./yade -x -n "examples/verification/$example.py"
 done

@@ -3,6 +3,6 @@
 _toppling_repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 _toppling_cache=${TOPPLING_CACHE:-${XDG_CACHE_HOME:-$HOME/.cache}/toppling}
 export TOPPLING_REPO="$_toppling_repo"
-export PYTHONPATH="$_toppling_repo/py:$_toppling_cache/yade/lib/x86_64-linux-gnu/yade/py${PYTHONPATH:+:$PYTHONPATH}"
+export PYTHONPATH="$_toppling_repo/py:$_toppling_repo:$_toppling_cache/yade/lib/x86_64-linux-gnu/yade/py${PYTHONPATH:+:$PYTHONPATH}"
 export PATH="/usr/bin:$PATH"
 unset _toppling_repo _toppling_cache

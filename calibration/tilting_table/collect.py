@@ -1,6 +1,6 @@
 """Collect the tilting-table summaries into one comparison table (ours vs thesis Table 5-4).
 
-    python3 scripts/collect_tilting_table.py [results/tilting_table [pattern ...]]
+    python3 calibration/tilting_table/collect.py [results/tilting_table [pattern ...]]
 
 Prints a Markdown table (pasted into README.md) from every ``<folder>/*/summary.json`` (only the
 runs whose name matches one of the shell-style ``pattern``s, when given), then

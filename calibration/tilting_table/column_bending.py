@@ -9,43 +9,40 @@ base then, sigma = 3 gamma h^2 sin(a) / b - gamma h cos(a), to compare with the 
 tensile strength (31.37 kPa, thesis §5.2.1): a continuous column stronger than the slope needs
 stands when its neighbours fall.
 
-    ./yade -x -n -j1 scripts/column_bending.py rmin rmax bond_tensile_strength [name=value ...]
+    ./yade -x -n -j1 calibration/tilting_table/column_bending.py rmin rmax bond_tensile_strength [name=value ...]
 
 Names: ``height`` [m] (0.3), ``rate`` [deg/s] (10), or any parameter of the tilting-table example
 (``seed=2``, ``bond_gap=0.735e-3``, ``arrangement=random``, ...), at the example's default otherwise.
 """
 import ast
 import math
-import os
 import sys
+from types import SimpleNamespace
 
 from yade import O
 
-sys.path.insert(0, os.path.join(os.environ["TOPPLING_REPO"], "scripts"))  # set by the ./yade launcher
-from tilting_table_model import definitions  # noqa: E402
+from examples import params
+from toppling.build import engines, geometry, packing
+from toppling.load import tilting
+from toppling.models import tilting_table
+from toppling.run.steps import run_checked, run_steps
 
-from toppling import geometry, packing, scene, tilting  # noqa: E402
 
-BLOCK_TENSILE_STRENGTH = 31.37e3  # [Pa] thesis §5.2.1
-
-
-def build_column(model: dict, width: float, height: float) -> list[int]:
-    """The column's discs, bonded as the example's rock, bottom Rmax fixed; returns their ids."""
-    table = model["table"]
+def build_column(slope: tilting_table.TiltingTable, width: float, height: float) -> list[int]:
+    """The column's discs, bonded as the model's rock, bottom Rmax fixed; returns their ids."""
     margin = 2 * width  # pack wider and cut: the column's sides are cut through, as by joints
     outline = [(-margin, 0), (width + margin, 0), (width + margin, height), (-margin, height)]
-    discs = packing.pack_polygon(geometry.region(outline), table.rmin, table.rmax, table.porosity,
-                                 seed=table.seed).discs
-    return model["bonded_rock"]([d for d in discs if 0 <= d[0] <= width], ((-1, 0), (1, 0)))
+    discs = packing.pack_polygon(geometry.region(outline), slope.rmin, slope.rmax, slope.porosity,
+                                 seed=slope.seed).discs
+    return slope.bonded_rock([d for d in discs if 0 <= d[0] <= width], ((-1, 0), (1, 0)))
 
 
-def table_cell(value: str) -> str:
-    """``value`` as a table cell holds it: a Python literal (``random`` becomes ``'random'``)."""
+def value(text: str):
+    """A command-line value: a number, or the text (``random``)."""
     try:
-        ast.literal_eval(value)
-        return value
+        return ast.literal_eval(text)
     except (ValueError, SyntaxError):
-        return repr(value)
+        return text
 
 
 def base_tension(gamma: float, width: float, height: float, tilt_deg: float) -> float:
@@ -62,18 +59,18 @@ def main() -> None:
     height, rate = float(options.pop("height", 0.3)), float(options.pop("rate", 10.0))
     if rate <= 0 or height <= 0:
         raise ValueError(f"height = {height} m, rate = {rate} deg/s are invalid: both must be > 0")
-    model = definitions(rmin=rmin, rmax=rmax, bond_tensile_strength=strength,
-                        **{name: table_cell(value) for name, value in options.items()})
-    table = model["table"]
-    width = model["WIDTH"]
-    ids = build_column(model, width, height)
+    case = SimpleNamespace(**{**params.TILTING_TABLE_IDEAL, "rmin": rmin, "rmax": rmax,
+                              "bond_tensile_strength": strength, **{k: value(v) for k, v in options.items()}})
+    slope = tilting_table.from_params(case, params)
+    width = slope.outline.width
+    ids = build_column(slope, width, height)
     top = max(ids, key=lambda i: O.bodies[i].state.pos[1])
-    steps.run_steps(int(0.2 / O.dt))  # settle under gravity on the level base
-    gamma = sum(O.bodies[i].state.mass for i in ids) * tilting.G / (width * height * model["T"])  # bulk [N/m3]
+    run_steps(int(0.2 / O.dt))  # settle under gravity on the level base
+    gamma = sum(O.bodies[i].state.mass for i in ids) * engines.G / (width * height * slope.rock["thickness"])  # bulk [N/m3]
     reference = tuple(O.bodies[top].state.pos)
     law, tilt, first, broke, start = engines.bond_law(), 0.0, None, False, O.time
     while tilt < 90:
-        steps.run_checked(1e-3, f"the column at {tilt:.1f} deg")
+        run_checked(1e-3, f"the column at {tilt:.1f} deg")
         tilt = rate * (O.time - start)
         tilting.set_tilt(tilt)
         if first is None and len(law.breakMode):
@@ -81,9 +78,9 @@ def main() -> None:
         broke = math.dist(tuple(O.bodies[top].state.pos)[:2], reference[:2]) > 0.5 * width
         if broke:  # bending alone moves it < 8 mm even at 90 deg
             break
-    print(f"column {1e3 * width:g} x {1e3 * height:g} mm, {table.arrangement} rock, bond tensile strength "
-          f"{strength / 1e3:g} kPa, R {1e3 * rmin:g}-{1e3 * rmax:g} mm (seed {table.seed}, bond gap "
-          f"{1e3 * model['BOND_GAP']:g} mm), {len(ids)} discs, {rate:g} deg/s, unit weight {gamma / 1e3:.1f} kN/m3")
+    print(f"column {1e3 * width:g} x {1e3 * height:g} mm, {slope.arrangement} rock, bond tensile strength "
+          f"{strength / 1e3:g} kPa, R {1e3 * rmin:g}-{1e3 * rmax:g} mm (seed {slope.seed}, bond gap "
+          f"{1e3 * slope.bond_gap:g} mm), {len(ids)} discs, {rate:g} deg/s, unit weight {gamma / 1e3:.1f} kN/m3")
     if first:
         print(f"first bond broken ({first[1]}, {1e3 * first[2]:.1f} mm above the base) at {first[0]:.1f} deg: "
               f"beam tension at the base {base_tension(gamma, width, height, first[0]) / 1e3:.1f} kPa")
@@ -92,7 +89,7 @@ def main() -> None:
         return
     print(f"failed (top moved {1e3 * 0.5 * width:g} mm) at {tilt:.1f} deg: beam tension at the base "
           f"{base_tension(gamma, width, height, tilt) / 1e3:.1f} kPa "
-          f"(block material: {BLOCK_TENSILE_STRENGTH / 1e3:.2f} kPa)")
+          f"(block material: {params.BLOCK_TENSILE_STRENGTH / 1e3:.2f} kPa)")
 
 
 main()

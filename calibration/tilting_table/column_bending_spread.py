@@ -1,12 +1,12 @@
 """Bending strength of one continuous column by packing size, over packing seeds.
 
-Runs scripts/column_bending.py (one ./yade process per column) for every size and seed given,
+Runs calibration/tilting_table/column_bending.py (one ./yade process per column) for every size and seed given,
 and prints per size the tilt at which each column broke and their mean and standard deviation:
 whether the rock's strength in bending depends on the particle size, apart from the scatter of
 the packing.
 
-    python3 scripts/column_bending_spread.py bond_tensile_strength seeds rmin-rmax [rmin-rmax ...] [name=value ...]
-    python3 scripts/column_bending_spread.py 55e3 1-10 0.001-0.004 0.001-0.0025
+    python3 calibration/tilting_table/column_bending_spread.py bond_tensile_strength seeds rmin-rmax [rmin-rmax ...] [name=value ...]
+    python3 calibration/tilting_table/column_bending_spread.py 55e3 1-10 0.001-0.004 0.001-0.0025
 
 ``seeds``: ``first-last``; ``name=value``: passed on to column_bending.py (``height=0.2``, ``bond_gap=0.735e-3``).
 """
@@ -16,7 +16,7 @@ import statistics
 import subprocess
 import sys
 
-REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 FAILED = re.compile(r"^failed \(top moved [\d.]+ mm\) at ([\d.]+) deg", re.MULTILINE)
 
 
@@ -29,7 +29,7 @@ def failure_tilt(output: str) -> float:
 
 
 def column(rmin: str, rmax: str, strength: str, seed: int, options: list[str]) -> float:
-    command = [os.path.join(REPO, "yade"), "-x", "-n", "-j1", os.path.join(REPO, "scripts", "column_bending.py"),
+    command = [os.path.join(REPO, "yade"), "-x", "-n", "-j1", os.path.join(REPO, "calibration", "tilting_table", "column_bending.py"),
                rmin, rmax, strength, f"seed={seed}", *options]
     return failure_tilt(subprocess.run(command, capture_output=True, text=True, check=True, cwd=REPO).stdout)
 

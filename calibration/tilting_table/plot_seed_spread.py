@@ -3,7 +3,7 @@ and for the random arrangement layout seed) against the wall time of its run, on
 packing size, the mean ± sd over the draws at each size's mean wall time and the thesis' target
 ± 3 deg shaded.
 
-    python3 scripts/plot_seed_spread.py [results/tilting_table] [out.png]
+    python3 calibration/tilting_table/plot_seed_spread.py [results/tilting_table] [out.png]
 
 Plots every model that was run with several draws (collect_tilting_table.seed_groups with
 DRAW), with its other packing sizes. A run that stood to its last stage is drawn at that stage

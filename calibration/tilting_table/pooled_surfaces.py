@@ -2,8 +2,8 @@
 alone has about ten failure points, too few to show a break of 10 deg against centimetres of
 scatter; the same break in every run adds up (toppling.analyse.failure.pooled_split_p_value).
 
-    source scripts/env.sh; /usr/bin/python3 scripts/pooled_surfaces.py results/tilting_table 'pattern' [...]
-    source scripts/env.sh; /usr/bin/python3 scripts/pooled_surfaces.py --record [docs/tilting_table.md]
+    source scripts/env.sh; /usr/bin/python3 calibration/tilting_table/pooled_surfaces.py results/tilting_table 'pattern' [...]
+    source scripts/env.sh; /usr/bin/python3 calibration/tilting_table/pooled_surfaces.py --record [docs/tilting_table.md]
 
 Takes the runs whose out folder matches a shell-style pattern and has failure points, or, with
 ``--record``, the random model's draws in the record of docs/tilting_table.md (the table after

@@ -2,7 +2,7 @@
 every seed in docs/tilting_table.md (the table after "Every seed at 95 kPa"), so that they can
 be checked on a machine that has none of the runs.
 
-    python3 scripts/seed_record.py [docs/tilting_table.md]
+    python3 calibration/tilting_table/seed_record.py [docs/tilting_table.md]
 
 For each packing size (a column of the record): seeds, mean ± standard deviation, median, seeds
 within 3 deg of the thesis' 35 deg, the mean minus 35 with its standard error and verdict

@@ -17,7 +17,7 @@ The failure is judged as it starts: once a block has toppled over, its toe skids
 With `smooth=0` the pairs across the joint are only unbonded (plain disc contacts of
 friction phi): coarse discs interlock (thesis Figs 4-11, 4-12).
 
-    ./yade -x -n examples/validation/block_on_incline.py
+    ./yade -x -n examples/verification/block_on_incline.py
 """
 import math
 

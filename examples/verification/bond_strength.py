@@ -7,7 +7,7 @@ bond load is compared with the criteria (Potyondy & Cundall 2004):
     bend:   M = sigma_c I / R_bar              (tension)
     shear:  F = (c + sigma tan phi_bar) A      (shear; sigma = 0, or `compression` first)
 
-    ./yade -x -n examples/validation/bond_strength.py            # load=pull
+    ./yade -x -n examples/verification/bond_strength.py            # load=pull
     YADE_BATCH=... or edit: load in {pull, bend, shear}, compression [Pa]
 """
 import math

@@ -11,7 +11,7 @@ I = 2/3 R_bar^3 t equals t h^3 / 12 of the beam. Bond modulus E, bond kn/ks = E/
 bonds' shear stiffness is G A / L. Discrete-beam error (midpoint rule over 10 segments):
 -0.25 % on the force term, plus +0.2 % shear deflection.
 
-    ./yade -x -n examples/validation/cantilever.py
+    ./yade -x -n examples/verification/cantilever.py
 """
 
 from yade import O

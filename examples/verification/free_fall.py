@@ -9,7 +9,7 @@ table's kn for each body; the contact stiffness is the two in series.
 The disc starts with the leapfrog half-step velocity -g dt/2 (YADE stores velocities at
 mid-step), so that its velocity at time t is -g t exactly.
 
-    ./yade -x -n examples/validation/free_fall.py
+    ./yade -x -n examples/verification/free_fall.py
 """
 import math
 

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Run every verification example and print their results as a Markdown table.
 
-    python3 scripts/report_validation.py     # after scripts/setup.sh; writes results/<case>/
+    python3 examples/verification/report.py     # after scripts/setup.sh; writes results/<case>/
 
 Each case runs `./yade -x -n <example>` with a one-line readParamsFromTable table.
 """
@@ -10,7 +10,7 @@ import os
 import subprocess
 import sys
 
-REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 CASES = [  # (label, example, parameters)
     ("free fall: impact velocity (Table 4-1)", "free_fall", {}),
     ("restitution, beta = 0.13", "restitution", {"beta": 0.13}),
@@ -29,7 +29,7 @@ def run(example: str, params: dict, out: str) -> dict:
     os.makedirs(os.path.dirname(table), exist_ok=True)
     with open(table, "w") as f:
         f.write(" ".join(params) + "\n" + " ".join(repr(v) if isinstance(v, str) else str(v) for v in params.values()) + "\n")
-    subprocess.run([os.path.join(REPO, "yade"), "-x", "-n", os.path.join(REPO, "examples", "validation", example + ".py")],
+    subprocess.run([os.path.join(REPO, "yade"), "-x", "-n", os.path.join(REPO, "examples", "verification", example + ".py")],
                    env=dict(os.environ, YADE_BATCH=f"{table}:2"), check=True, capture_output=True)
     with open(os.path.join(out, "summary.json")) as f:
         return json.load(f)
@@ -39,7 +39,7 @@ def main() -> int:
     print("| case | measured | reference | rel. error | notes |")
     print("|---|---|---|---|---|")
     for k, (label, example, params) in enumerate(CASES):
-        s = run(example, params, os.path.join(REPO, "results", "validation", f"{k:02d}_{example}"))
+        s = run(example, params, os.path.join(REPO, "results", "verification", f"{k:02d}_{example}"))
         notes = []
         if "bounces" in s:
             notes.append(f"{s['bounces']} bounces, max height error {s['bounce_height_max_rel_error']:.1e}")

@@ -4,7 +4,7 @@ For a linear spring-dashpot with critical damping ratio beta the restitution coe
 is e = exp(-pi beta / sqrt(1 - beta^2)). No gravity, so that the contact starts and ends at
 zero overlap.
 
-    ./yade -x -n examples/validation/restitution.py
+    ./yade -x -n examples/verification/restitution.py
 """
 import math
 

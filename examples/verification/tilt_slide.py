@@ -8,8 +8,8 @@ creep of the joint under one tilt step is ~1e-6 b, sliding at 0.25 deg above ata
 moves ~3e-4 b, and a single local slip event (seen once, 1.25 deg early) does not continue. `phi` is atan(mu_j) in degrees; the block is flat (b/h = 4) so it cannot
 topple before it slides.
 
-    ./yade -x -n examples/validation/tilt_slide.py
-    ./yade-batch examples/validation/tilt_slide.table examples/validation/tilt_slide.py
+    ./yade -x -n examples/verification/tilt_slide.py
+    ./yade-batch examples/verification/tilt_slide.table examples/verification/tilt_slide.py
 """
 import math
 

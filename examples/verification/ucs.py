@@ -8,7 +8,7 @@ A 4.7 x 10 cm specimen of discs (R 1-2.5 mm), bonded, compressed between platens
 Differences from the thesis, stated: porosity 0.18 instead of 0.12 (0.12 needs locked-in
 overlap, see README), bond radius multiplier 1 (not given), bond gap `bond_gap` x Rmin.
 
-    ./yade -x -n examples/validation/ucs.py            # test=1 (Table 5-1 column)
+    ./yade -x -n examples/verification/ucs.py            # test=1 (Table 5-1 column)
 """
 import math
 

@@ -8,7 +8,7 @@ import sys
 import pytest
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-sys.path.insert(0, os.path.join(REPO, "py"))
+sys.path[:0] = [os.path.join(REPO, "py"), REPO]  # toppling, and examples.params
 os.environ["OMP_NUM_THREADS"] = "1"  # bitwise-reproducible runs (save/load test)
 
 import yade  # noqa: E402,F401  (loads the plugin-enabled YADE, our classes included)

@@ -1,5 +1,5 @@
 """A single bond loaded to failure breaks at the load its criteria predict, in the right mode
-(examples/validation/bond_strength.py)."""
+(examples/verification/bond_strength.py)."""
 import math
 
 import pytest
@@ -15,7 +15,7 @@ TENSILE, COHESION = 1e6, 1e6
     ("shear", 2e6, "shear"),  # friction term: strength (c + sigma tan 30°) A = 2.15 c A
 ])
 def test_bond_breaks_at_its_strength_in_the_right_mode(tmp_path, load, compression, mode):
-    s = run_example("examples/validation/bond_strength.py", tmp_path, load=load, compression=compression,
+    s = run_example("examples/verification/bond_strength.py", tmp_path, load=load, compression=compression,
                     tensile=TENSILE, cohesion=COHESION)
     assert s["mode"] == mode
     assert s["rel_error"] < 0.01
