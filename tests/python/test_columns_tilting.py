@@ -257,10 +257,6 @@ def test_same_command_continues_its_own_checkpoint_and_no_other(empty_scene, tmp
     assert checkpoint.continues({**run, "rmin": 0.002}, resume=1) and not checkpoint.continues(run, resume=0)
     with pytest.raises(ValueError, match="resume = 2"):
         checkpoint.continues(run, resume=2)
-    # a parameter added since the checkpoint was saved: continued only with the value that run had
-    assert checkpoint.continues({**run, "shrink": 0}, resume=-1, added={"shrink": 0})
-    with pytest.raises(ValueError, match=r"shrink 0 there, 1 here"):
-        checkpoint.continues({**run, "shrink": 1}, resume=-1, added={"shrink": 0})
 
 
 def test_missing_checkpoint_says_what_to_do(tmp_path):

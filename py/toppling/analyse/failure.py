@@ -299,11 +299,10 @@ def surface_angles(result: dict) -> dict:
 
 
 def phi_text(angles: dict) -> str:
-    """The surfaces' phi and, where there are two, the overall surface's beside them (summaries
-    older than ``phi_overall_deg`` lack it); "-" without a surface."""
+    """The surfaces' phi and, where there are two, the overall surface's beside them; "-"
+    without a surface."""
     text = ", ".join(f"{p:.1f}" for p in angles["phi_deg"]) or "-"
-    overall = angles.get("phi_overall_deg")
-    return f"{text} (overall {overall:.1f})" if len(angles["phi_deg"]) > 1 and overall is not None else text
+    return f"{text} (overall {angles['phi_overall_deg']:.1f})" if len(angles["phi_deg"]) > 1 else text
 
 
 def zone(top_displacement: float, still_moving: bool, base_displacement: float, still: float) -> str:

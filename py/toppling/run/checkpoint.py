@@ -3,7 +3,7 @@ from __future__ import annotations
 
 import json
 import os
-from typing import Any, Optional, Sequence
+from typing import Any, Sequence
 
 from yade import O
 
@@ -31,14 +31,12 @@ class Checkpoint:
         os.replace(scene_tmp, self.scene_path)
         os.replace(state_tmp, self.state_path)
 
-    def continues(self, inputs: dict[str, Any], resume: int, free: Sequence[str] = (),
-                  added: Optional[dict[str, Any]] = None) -> bool:
+    def continues(self, inputs: dict[str, Any], resume: int, free: Sequence[str] = ()) -> bool:
         """Whether a run with parameters ``inputs`` continues this checkpoint rather than starting
         afresh: ``resume`` = 1 yes, 0 no, -1 if there is one, so that running the same command
         again continues a stopped run. With -1 the checkpoint's ``"inputs"`` must be the same
         (apart from the ``free`` ones, which may change between a run and its continuation):
-        a run with other parameters stops rather than overwrite another run's results. ``added``
-        names parameters newer than older checkpoints, with the value those runs had."""
+        a run with other parameters stops rather than overwrite another run's results."""
         if resume not in (-1, 0, 1):
             raise ValueError(f"resume = {resume} is invalid: it must be -1 (continue a run with the same "
                              "parameters), 0 (start afresh) or 1 (continue the checkpoint)")
@@ -47,7 +45,7 @@ class Checkpoint:
         if not self.exists():
             return False
         with open(self.state_path) as f:
-            saved = {**(added or {}), **json.load(f).get("inputs", {})}
+            saved = json.load(f).get("inputs", {})
 
         def fixed(d: dict[str, Any]) -> dict[str, Any]:
             return {k: v for k, v in json.loads(json.dumps(d)).items() if k not in free}  # as stored

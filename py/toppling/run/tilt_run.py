@@ -104,7 +104,6 @@ def sort_breaks_before_stages(before: dict, ramp_tilt: Callable[[float], float])
     rock = {"level": bonding.rock_breaks(0, before["level"]),  # each judged at its phase's end
             "ramp": bonding.rock_breaks(before["level"], before["ramp"])}
     before["loose"] = {phase: before[phase] - len(breaks) for phase, breaks in rock.items()}
-    before.pop("first_ramp_crack_deg", None)  # sorted again by a newer rule, a run may have none
     if rock["ramp"]:
         before["first_ramp_crack_deg"] = ramp_tilt(engines.bond_law().breakTime[rock["ramp"][0]])
     return before
@@ -130,9 +129,8 @@ def ramp_warning(breaks: dict) -> str:
                       "own weight: shrink the overlaps before bonding (packing.shrink_overlaps) or raise the bond "
                       "strengths")
     if ramp:
-        first = breaks.get("first_ramp_crack_deg")  # not in checkpoints older than it
-        below = f"below {first:.1f} deg, where the ramp first cracked the rock," if first is not None else "lower"
-        advice.append(f"rerun with a start_tilt {below} to judge in stages the tilts the ramp passed")
+        advice.append(f"rerun with a start_tilt below {breaks['first_ramp_crack_deg']:.1f} deg, where the ramp "
+                      "first cracked the rock, to judge in stages the tilts the ramp passed")
     return (f"WARNING: {level} bonds of the rock broke on the level table and {ramp} on the ramp to "
             "start_tilt: the slope entered its first stage cracked and its failure tilt may be low; "
             + "; ".join(advice))
@@ -157,16 +155,13 @@ class TiltRun:
                  rmin: float, rmax: float):
         self.protocol, self.criteria, self.checkpoint, self.state = protocol, criteria, checkpoint, state
         self.points, self.series, self.rmin, self.rmax = points, series, rmin, rmax
-        self.layout = layout = columns.ColumnLayout(**state["layout"])
+        self.layout = columns.ColumnLayout(**state["layout"])
         self.off_table = -2 * rmax
         self.ids, self.watched = state["ids"], state["watched"]
         if state.get("phase") is None and criteria.fail_columns > len(self.watched):  # a resumed run may watch fewer
             raise ValueError(f"fail_columns = {criteria.fail_columns} is invalid: it must be at most the number of "
                              f"watched groups ({len(self.watched)})")
-        # older checkpoints lack the labels: the column each watched group stands in when resumed
-        self.watched_columns = state.get("watched_columns") or [
-            failure.column_label(layout.column_of(x)) if layout.column_of(x) else "?"
-            for x, _ in tilting.medians(self.watched)]
+        self.watched_columns = state["watched_columns"]
         self.progress = Progress(energy=lambda: state["energy"][-1][2])  # what on_chunk just recorded
         self.earlier_wall_time = state.get("wall_time", 0.0)  # of the runs this one resumes
         self.last_save = self.progress.wall_time
@@ -346,7 +341,7 @@ class TiltRun:
     def count_ramp_breaks(self, start: float) -> dict:
         """Add to ``breaks_before_stages`` the bonds broken on the ramp that began at ``start``
         and tell them from those that freed loose discs (``sort_breaks_before_stages``)."""
-        p, before = self.protocol, self.state.setdefault("breaks_before_stages", {"level": 0})  # older checkpoints
+        p, before = self.protocol, self.state["breaks_before_stages"]
         before["ramp"] = engines.broken_bonds() - before["level"]
         return sort_breaks_before_stages(before, lambda t: min(p.start_tilt, p.tilt_rate * (t - start)))
 
