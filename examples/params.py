@@ -58,6 +58,10 @@ TILTING_TABLE_RESULTS = {"ideal": dict(failure_tilt_deg=35, phi_deg=[15]),  # §
 CALIBRATION_RANGES = {"bond_tensile_strength": (13.5e3, 209e3), "main_joint_friction": (0.15, 0.23),
                       "base_joint_friction": (0.15, 0.23)}
 CALIBRATED_BOND_TENSILE_STRENGTH = {"ideal": 95e3, "random": 65e3}  # [Pa]
+# The calibration's rule: a mean failure tilt within 3 deg of the thesis', and the finer packing's
+# within 2 deg of the coarser one's, each by two standard errors.
+TARGET_TOLERANCE_DEG = 3.0
+SIZE_TOLERANCE_DEG = 2.0
 # The calibrated ideal case at R 1-4 mm: the defaults of examples/tilting_table/run.py (its
 # parameters: toppling.models.tilting_table.from_params, toppling.run.tilt_run.TiltProtocol,
 # toppling.load.tilting.StageCriteria). 0 for a thesis value: the table's.

@@ -8,7 +8,7 @@ repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 ctest --test-dir "$repo/build" --output-on-failure
 source "$repo/scripts/env.sh"
 cd "$repo"
-/usr/bin/python3 -m pytest -q tests/python "$@"
+/usr/bin/python3 -m pytest -q tests/python tests/calibration "$@"
 ./yade --test > build/yade-test.log 2>&1 || { tail -40 build/yade-test.log; echo "YADE's --test failed" >&2; exit 1; }
 ./yade --check > build/yade-check.log 2>&1 || { tail -40 build/yade-check.log; echo "YADE's --check failed" >&2; exit 1; }
 grep -q 'ALL TESTS PASSED' build/yade-test.log && grep -q 'ALL CHECKS PASSED' build/yade-check.log

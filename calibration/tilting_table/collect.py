@@ -1,6 +1,6 @@
 """Collect the tilting-table summaries into one comparison table (ours vs thesis Table 5-4).
 
-    python3 calibration/tilting_table/collect.py [results/tilting_table [pattern ...]]
+    source scripts/env.sh; /usr/bin/python3 calibration/tilting_table/collect.py [results/tilting_table [pattern ...]]
 
 Prints a Markdown table (pasted into README.md) from every ``<folder>/*/summary.json`` (only the
 runs whose name matches one of the shell-style ``pattern``s, when given), then
@@ -16,14 +16,15 @@ only when two standard errors of the difference keep it inside (or outside) the 
 a stronger bond does to the same packings (the shift packing by packing, and the stronger mean
 it gives when added to the weaker one's mean over all its seeds).
 """
-import fnmatch
-import glob
-import json
 import math
-import os
 import statistics
 import sys
-from typing import Iterable, NamedTuple, Optional, Sequence
+from typing import NamedTuple, Optional, Sequence
+
+from examples import params
+from examples.params import SIZE_TOLERANCE_DEG, TARGET_TOLERANCE_DEG
+from toppling.analyse.seeds import failed_seeds, first_stage_failure, fmt, inside_band, mean_against, mean_difference, stats_text, within
+from toppling.io.reader import read_summaries
 
 
 CALIBRATION = ("bond_tensile_strength", "main_joint_friction", "base_joint_friction")  # 0: the thesis' tables
@@ -34,53 +35,11 @@ ADDED = {"shrink_overlaps": 0, "fail_columns": 1, "bond_gap": 0.0, "damping": 0.
          "joint_pieces": 0, "arrest_time": 0.0}
 # no part of the model (z_order only numbers the discs)
 RUN_ONLY = ("out", "resume", "checkpoint_every", "max_tilt", "post_failure_time", "z_order")
-SIZE_TOLERANCE_DEG = 2.0
-TARGET_TOLERANCE_DEG = 3.0  # issue 4: the thesis' failure tilt +- 3 deg
-TABLE_BOND_GAP = 1.05e-3  # [m] Table 5-2: what bond_gap 0 stands for (examples/tilting_table.py)
+TABLE_BOND_GAP = params.TABLE_5_2_BOND_GAP  # what bond_gap 0 stands for
 SEED = ("seed",)  # what draws one packing of a model
 DRAW = ("seed", "layout_seed")  # what draws one random arrangement: its packing and its block layout
 MEAN_AGAINST_HEADER = (f"mean − thesis ± standard error (°): within {TARGET_TOLERANCE_DEG:g}° by two standard "
                        "errors?")
-
-
-def fmt(value, digits=1):
-    if value is None:
-        return "-"
-    if isinstance(value, list):
-        return ", ".join(fmt(v, digits) for v in value) or "-"
-    return f"{value:.{digits}f}"
-
-
-def load(folder: str, patterns: Sequence[str] = ("*",)) -> dict[str, dict]:
-    """Summaries by run name (the out folder's name), of the runs whose name matches a pattern."""
-    runs = {}
-    for path in sorted(glob.glob(os.path.join(folder, "*", "summary.json"))):
-        name = os.path.basename(os.path.dirname(path))
-        if any(fnmatch.fnmatchcase(name, pattern) for pattern in patterns):
-            with open(path) as f:
-                runs[name] = json.load(f)
-    return runs
-
-
-def record_table(lines: Iterable[str], heading: str) -> tuple[list[str], list[list[str]]]:
-    """The header cells and the rows' cells of the first Markdown table after the line that
-    starts with ``heading``: the records in docs/tilting_table.md that let a verdict be
-    recomputed on a machine without the runs."""
-    lines = iter(lines)
-    if not any(line.startswith(heading) for line in lines):
-        raise ValueError(f"no line starts with {heading!r}")
-    header = table_cells(next(line for line in lines if line.startswith("|")))
-    next(lines)  # the header's rule
-    rows = []
-    for line in lines:
-        if not line.startswith("|"):
-            break
-        rows.append(table_cells(line))
-    return header, rows
-
-
-def table_cells(line: str) -> list[str]:
-    return [cell.strip() for cell in line.strip().strip("|").split("|")]
 
 
 def model_key(inputs: dict, drawn_by: Sequence[str] = SEED) -> tuple[tuple[str, object], ...]:
@@ -207,11 +166,6 @@ def size_check(runs: dict[str, dict]) -> list[str]:
     return lines
 
 
-def first_stage_failure(s: dict) -> bool:
-    """Whether a run failed in its first stage: its failure tilt is only an upper bound."""
-    return s["failure_tilt_deg"] is not None and s.get("failed_in_first_stage", False)
-
-
 def entered_cracked(s: dict) -> bool:
     """Whether bonds of the rock broke on the ramp to start_tilt (besides those that freed a
     loose disc: toppling.bonding.rock_breaks): the run warned that its failure tilt may be low
@@ -274,11 +228,6 @@ def seed_groups(runs: dict[str, dict], drawn_by: Sequence[str] = SEED) -> dict[S
     return {key: one_per_draw(group, drawn_by) for key, group in groups.items()}
 
 
-def failed_seeds(group: list[dict]) -> list[dict]:
-    """The runs of ``group`` with a failure tilt that is not only an upper bound."""
-    return [s for s in group if s["failure_tilt_deg"] is not None and not first_stage_failure(s)]
-
-
 def group_name(key: SeedGroup) -> str:
     joints = f", joint stiffness x {key.joints:g}" if key.joints != 1 else ""
     model = dict(key.model)
@@ -315,64 +264,15 @@ def seed_spread(runs: dict[str, dict], drawn_by: Sequence[str] = SEED) -> list[s
         phis = [phi for phi in map(overall_phi, failed) if phi is not None]
         seeds = ", ".join("/".join(f"{v:g}" for v in draw(s, drawn_by)) for s in group)
         target = group[0]["thesis"]["failure_tilt_deg"]
-        inside = inside_band(tilts, target)
+        inside = inside_band(tilts, target, TARGET_TOLERANCE_DEG)
         phi_range = f"{stats_text(phis)} ({min(phis):.1f}–{max(phis):.1f})" if phis else "-"
         stood = sum(s["failure_tilt_deg"] is None for s in group)
         bounded = [f"{s['failure_tilt_deg']:g}" for s in group if first_stage_failure(s)]
         others = ([f"{stood} stood"] if stood else []) + ([f"at most {', '.join(bounded)}"] if bounded else [])
         others = f" ({'; '.join(others)})" if others else ""
         lines.append(f"| {group_name(key)} | {seeds} | {min(tilts):.1f}–{max(tilts):.1f} | {stats_text(tilts)} | "
-                     f"{inside} of {len(group)}{others} | {mean_against(tilts, target)} | {phi_range} |")
+                     f"{inside} of {len(group)}{others} | {mean_against(tilts, target, TARGET_TOLERANCE_DEG)} | {phi_range} |")
     return lines
-
-
-def mean_difference(fine: list[float], coarse: list[float]) -> tuple[str, str]:
-    """The difference of the means of ``fine`` and ``coarse`` with its standard error, and
-    whether it is within SIZE_TOLERANCE_DEG: yes if it is by two standard errors, no if it is
-    outside by two, undecided otherwise (or with fewer than two values on a side)."""
-    if not fine or not coarse:
-        return "-", "-"
-    d = statistics.mean(fine) - statistics.mean(coarse)
-    if min(len(fine), len(coarse)) < 2:
-        return f"{d:+.1f}", f"undecided ({len(fine)} vs {len(coarse)} seeds)"
-    se = se_of_difference(fine, coarse)
-    return f"{d:+.1f} ± {se:.1f}", within(d, se, SIZE_TOLERANCE_DEG)
-
-
-def se_of_difference(fine: list[float], coarse: list[float]) -> float:
-    """The standard error of the difference of the means of two or more ``fine`` and ``coarse``."""
-    return (statistics.variance(fine) / len(fine) + statistics.variance(coarse) / len(coarse)) ** 0.5
-
-
-def inside_band(tilts: list[float], target: float) -> int:
-    """How many ``tilts`` are within the issue's tolerance of the thesis' ``target``."""
-    return sum(abs(t - target) <= TARGET_TOLERANCE_DEG for t in tilts)
-
-
-def within(d: float, se: float, tolerance: float) -> str:
-    """Whether a difference ``d`` with standard error ``se`` is within ``tolerance``: yes if it
-    is by two standard errors, no if it is outside by two, undecided otherwise."""
-    return "yes" if abs(d) + 2 * se <= tolerance else "no" if abs(d) - 2 * se > tolerance else "undecided"
-
-
-def difference_from(values: list[float], target: float) -> tuple[float, float]:
-    """The mean of two or more ``values`` minus ``target``, and the mean's standard error."""
-    return statistics.mean(values) - target, statistics.stdev(values) / len(values) ** 0.5
-
-
-def mean_against(values: list[float], target: float) -> str:
-    """The mean of two or more ``values`` minus ``target``, its standard error, and whether the
-    mean is within the issue's tolerance of the target (``within``); undecided from two values,
-    whose standard deviation says little (two tilts in the same 2° stage give 0)."""
-    d, se = difference_from(values, target)
-    verdict = within(d, se, TARGET_TOLERANCE_DEG) if len(values) > 2 else "undecided (2 draws)"
-    return f"{d:+.1f} ± {se:.1f}: {verdict}"
-
-
-def stats_text(values: list[float]) -> str:
-    if len(values) < 2:
-        return fmt(values[0]) if values else "-"
-    return f"{statistics.mean(values):.1f} ± {statistics.stdev(values):.1f}"
 
 
 def size_over_seeds(runs: dict[str, dict]) -> list[str]:
@@ -415,13 +315,13 @@ def size_over_seeds_row(key: SeedGroup, group: list[dict], coarse_key: SeedGroup
         stood = len(g) - len(side)
         extra = f", {stood} stood or bounded" if stood else ""
         cells.append(f"{len(side)} of {len(g)}{extra}: {stats_text(t)}, φ {stats_text(p)}")
-    tilt_text, tilt_ok = mean_difference(*tilts)
-    phi_text, phi_ok = mean_difference(*phis)
+    tilt_text, tilt_ok = mean_difference(*tilts, SIZE_TOLERANCE_DEG)
+    phi_text, phi_ok = mean_difference(*phis, SIZE_TOLERANCE_DEG)
     verdict = ("yes" if tilt_ok == phi_ok == "yes" else "no" if "no" in (tilt_ok, phi_ok)
                else phi_ok if tilt_ok == "yes" else tilt_ok)  # an undecided phi leaves it undecided
     coarse = coarse_key.size_text()
     coarse += f", bond gap {1e3 * coarse_key.gap:g} mm" if coarse_key.gap != key.gap else ""
-    first_text = mean_difference(*firsts)[0]
+    first_text = mean_difference(*firsts, SIZE_TOLERANCE_DEG)[0]
     return [f"| {group_name(key)} vs {coarse} | {cells[0]} | {cells[1]} | {tilt_text} | {phi_text} | {first_text} | "
             f"{verdict} |"]
 
@@ -491,7 +391,7 @@ def joint_stiffness_check(runs: dict[str, dict]) -> list[str]:
 
 
 def main(folder: str, patterns: Sequence[str] = ("*",)) -> None:
-    runs = load(folder, patterns)
+    runs = read_summaries(folder, patterns)
     rows = []
     for name, s in runs.items():
         inputs = s["inputs"]

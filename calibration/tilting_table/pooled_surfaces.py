@@ -3,11 +3,10 @@ alone has about ten failure points, too few to show a break of 10 deg against ce
 scatter; the same break in every run adds up (toppling.analyse.failure.pooled_split_p_value).
 
     source scripts/env.sh; /usr/bin/python3 calibration/tilting_table/pooled_surfaces.py results/tilting_table 'pattern' [...]
-    source scripts/env.sh; /usr/bin/python3 calibration/tilting_table/pooled_surfaces.py --record [docs/tilting_table.md]
+    source scripts/env.sh; /usr/bin/python3 calibration/tilting_table/pooled_surfaces.py --record [records/random_draws.csv]
 
 Takes the runs whose out folder matches a shell-style pattern and has failure points, or, with
-``--record``, the random model's draws in the record of docs/tilting_table.md (the table after
-RECORD_HEADING), so that the verdict over all draws can be recomputed on a machine that has
+``--record``, the random model's draws in the record (records/random_draws.csv), so that the verdict over all draws can be recomputed on a machine that has
 none of the runs. Prints each run's failure tilt, points, overall phi, split_p_value and its toe
 and upper phi at the common cut (a run with fewer than three points on a side: '-'), then the
 failure tilt over the runs against the thesis' (``failure_tilt_line``), the pooled p, the common
@@ -16,70 +15,70 @@ how many runs the toe line is the shallower, and the verdict of the rule for the
 surfaces (``two_surfaces_verdict``), and where the thesis' one run falls among ours
 (``thesis_among_draws``). The test is two-sided: bends either way add up.
 """
+import csv
 import os
-import re
 import statistics
 import sys
 from typing import Iterable, Optional
 
+from examples import params
 from toppling.analyse import failure
+from toppling.analyse.seeds import (difference_from, failed_seeds, first_stage_failure, inside_band, mean_against,
+                                    stats_text, within)
+from toppling.io.reader import read_summaries
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import collect_tilting_table as collect  # noqa: E402
-
-RECORD_HEADING = "**Every random draw's failure points.**"
-RECORD = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "docs", "tilting_table.md")
-POINT = re.compile(r"(-?\d+(?:\.\d+)?)\s*:\s*(-?\d+(?:\.\d+)?)")  # "29:8": mm from the toe : mm high
-THESIS_PHI_DEG = (14.0, 24.0)  # thesis §5.2.4 (Fig 5-11): the random model's toe and upper surfaces
-THESIS_TILT_DEG = 19.0  # thesis §5.2 (Table 5-4): the random model's failure tilt
-UPPER_BOUND = "≤"  # a record's tilt that is only an upper bound: the draw failed in its first stage
+RECORD = os.path.join(os.path.dirname(os.path.abspath(__file__)), "records", "random_draws.csv")
+THESIS_PHI_DEG = tuple(params.TILTING_TABLE_RESULTS["random"]["phi_deg"])  # the toe and upper surfaces
+THESIS_TILT_DEG = params.TILTING_TABLE_RESULTS["random"]["failure_tilt_deg"]
+TOLERANCE_DEG = params.TARGET_TOLERANCE_DEG
+UPPER_BOUND = "≤"  # printed before a tilt that is only an upper bound: the draw failed in its first stage
 SPLIT_LEVEL = 0.05
 
 
 def load(folder: str, patterns: list[str]) -> dict[str, dict]:
-    """The summaries of collect_tilting_table.load that have failure points."""
-    return {name: s for name, s in collect.load(folder, patterns).items() if s.get("failure_points")}
+    """The summaries of the runs in ``folder`` matching ``patterns`` that have failure points."""
+    return {name: s for name, s in read_summaries(folder, patterns).items() if s.get("failure_points")}
 
 
 def read_record(lines: Iterable[str]) -> dict[str, dict]:
     """Runs by name ("line N: <draw>") as summaries (``failure_tilt_deg``,
-    ``failed_in_first_stage`` for a tilt marked UPPER_BOUND, the thesis' tilt, and
-    ``failure_points`` in the slope frame, m: x negative into the slope) from the record's
-    columns line, draw, failure tilt and failure points."""
-    _, rows = collect.record_table(lines, RECORD_HEADING)
+    ``failed_in_first_stage`` for an upper bound, the thesis' tilt, and ``failure_points`` in
+    the slope frame, m: x negative into the slope) from the record's CSV lines (line, draw,
+    failure_tilt_deg, upper_bound, failure_points_mm: "mm from the toe:mm high" pairs)."""
     runs = {}
-    for line, draw, tilt, points in (row[:4] for row in rows):
-        runs[f"line {line}: {draw}"] = {
-            "failure_tilt_deg": float(tilt.removeprefix(UPPER_BOUND)),
-            "failed_in_first_stage": tilt.startswith(UPPER_BOUND),
+    for row in csv.DictReader(lines):
+        runs[f"line {row['line']}: {row['draw']}"] = {
+            "failure_tilt_deg": float(row["failure_tilt_deg"]),
+            "failed_in_first_stage": bool(int(row["upper_bound"])),
             "thesis": {"failure_tilt_deg": THESIS_TILT_DEG},
-            "failure_points": [[-float(x) * 1e-3, float(y) * 1e-3] for x, y in POINT.findall(points)]}
+            "failure_points": [[-float(x) * 1e-3, float(y) * 1e-3]
+                               for x, y in (point.split(":") for point in row["failure_points_mm"].split())]}
     return runs
 
 
 def tilt_text(s: dict) -> str:
     tilt = f"{s['failure_tilt_deg']:g}"  # a run with failure points failed at a tilt
-    return f"{UPPER_BOUND} {tilt}" if collect.first_stage_failure(s) else tilt
+    return f"{UPPER_BOUND} {tilt}" if first_stage_failure(s) else tilt
 
 
 def failure_tilt_line(runs: dict[str, dict]) -> str:
     """The failure tilt over the runs as the collect script's seed sections give it: mean ±
     standard deviation and range of the runs that failed past their first stage, how many runs
     failed within the issue's tolerance of the thesis' tilt (an upper bound counts outside), and
-    the mean against the thesis by two standard errors (collect.mean_against)."""
+    the mean against the thesis by two standard errors (mean_against)."""
     group = list(runs.values())
     targets = {s["thesis"]["failure_tilt_deg"] for s in group}
     if len(targets) > 1:
         return f"failure tilt: not pooled, the runs are of models with different thesis' tilts {sorted(targets)}"
-    tilts, target = [s["failure_tilt_deg"] for s in collect.failed_seeds(group)], targets.pop()
-    inside = collect.inside_band(tilts, target)
-    bounds = [tilt_text(s) for s in group if collect.first_stage_failure(s)]
+    tilts, target = [s["failure_tilt_deg"] for s in failed_seeds(group)], targets.pop()
+    inside = inside_band(tilts, target, TOLERANCE_DEG)
+    bounds = [tilt_text(s) for s in group if first_stage_failure(s)]
     bounds = f", {', '.join(bounds)} left out" if bounds else ""
     if len(tilts) < 2:
         return f"failure tilt: {len(tilts)} of {len(group)} runs failed past their first stage{bounds}"
-    return (f"failure tilt over {len(tilts)} runs: {collect.stats_text(tilts)}° ({min(tilts):g}–{max(tilts):g}°), "
-            f"{inside} of {len(group)} within {collect.TARGET_TOLERANCE_DEG:g}° of the thesis' {target:g}°{bounds}; "
-            f"mean − thesis {collect.mean_against(tilts, target)}")
+    return (f"failure tilt over {len(tilts)} runs: {stats_text(tilts)}° ({min(tilts):g}–{max(tilts):g}°), "
+            f"{inside} of {len(group)} within {TOLERANCE_DEG:g}° of the thesis' {target:g}°{bounds}; "
+            f"mean − thesis {mean_against(tilts, target, TOLERANCE_DEG)}")
 
 
 def spread(values: list[float]) -> str:
@@ -99,8 +98,8 @@ def two_surfaces_verdict(p: Optional[float], pairs: list) -> str:
         return "undecided (too few runs split at the common cut)"
     sides = []
     for side, (name, thesis) in enumerate(zip(("toe", "upper"), THESIS_PHI_DEG)):
-        d, se = collect.difference_from([pair[side].phi_deg for pair in pairs], thesis)
-        sides.append((name, d, se, collect.within(d, se, collect.TARGET_TOLERANCE_DEG)))
+        d, se = difference_from([pair[side].phi_deg for pair in pairs], thesis)
+        sides.append((name, d, se, within(d, se, TOLERANCE_DEG)))
     verdicts = [side[3] for side in sides]
     verdict = "met" if verdicts == ["yes", "yes"] else "not met" if "no" in verdicts else "undecided"
     margins = "; ".join(f"{name} mean − thesis {d:+.1f} ± {se:.1f}° (SE): {v}" for name, d, se, v in sides)
@@ -148,7 +147,7 @@ def runs_from(argv: list[str]) -> dict[str, dict]:
     """The runs the command line names (module docstring); exits with a message when there are none."""
     if argv[:1] == ["--record"]:
         path = argv[1] if len(argv) > 1 else RECORD
-        with open(path) as f:
+        with open(path, newline="") as f:
             runs = read_record(f)
         where = f"the record in {path}"
     else:

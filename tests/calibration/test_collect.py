@@ -1,11 +1,11 @@
-"""scripts/collect_tilting_table.py on made-up summaries: the particle-size check, the seed spread, the table."""
+"""calibration/tilting_table/collect.py on made-up summaries: the particle-size check, the seed spread, the table."""
 import json
 import math
 
 import pytest
 from conftest import load_script
 
-collect = load_script("collect_tilting_table")
+collect = load_script("calibration/tilting_table/collect.py")
 
 
 def summary(rmax: float, tilt, phi: list, strength: float = 130e3, arrangement: str = "ideal", **numerics) -> dict:
@@ -124,9 +124,9 @@ def test_patterns_keep_only_the_runs_they_name(tmp_path):
     for name in ("ideal_fine", "ideal_coarse", "random_coarse"):
         (tmp_path / name).mkdir()
         (tmp_path / name / "summary.json").write_text(json.dumps(summary(0.004, 30.0, [15.0])))
-    assert sorted(collect.load(str(tmp_path), ["*_coarse", "ideal_f*"])) == ["ideal_coarse", "ideal_fine", "random_coarse"]
-    assert list(collect.load(str(tmp_path), ["random_*"])) == ["random_coarse"]
-    assert len(collect.load(str(tmp_path))) == 3
+    assert sorted(collect.read_summaries(str(tmp_path), ["*_coarse", "ideal_f*"])) == ["ideal_coarse", "ideal_fine", "random_coarse"]
+    assert list(collect.read_summaries(str(tmp_path), ["random_*"])) == ["random_coarse"]
+    assert len(collect.read_summaries(str(tmp_path))) == 3
 
 
 def test_a_finer_packing_is_compared_with_the_rerun_of_a_coarse_first_stage_failure():

@@ -7,7 +7,7 @@ import sys
 
 import pytest
 
-REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path[:0] = [os.path.join(REPO, "py"), REPO]  # toppling, and examples.params
 os.environ["OMP_NUM_THREADS"] = "1"  # bitwise-reproducible runs (save/load test)
 
@@ -53,9 +53,10 @@ def run_example(path: str, tmp_path, threads: int = 1, **params) -> dict:
         return json.load(f)
 
 
-def load_script(name: str):
-    """``scripts/<name>.py`` as a module, to test its functions."""
-    spec = importlib.util.spec_from_file_location(name, os.path.join(REPO, "scripts", name + ".py"))
+def load_script(path: str):
+    """The script at ``path`` (from the repository's root) as a module, to test its functions."""
+    name = os.path.splitext(os.path.basename(path))[0]
+    spec = importlib.util.spec_from_file_location(name, os.path.join(REPO, path))
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
     return module

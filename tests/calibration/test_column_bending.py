@@ -1,7 +1,7 @@
-"""scripts/column_bending_spread.py: a column per seed through column_bending.py, and the table it prints."""
+"""calibration/tilting_table/column_bending_spread.py: a column per seed through column_bending.py, and the table it prints."""
 from conftest import load_script
 
-spread = load_script("column_bending_spread")
+spread = load_script("calibration/tilting_table/column_bending_spread.py")
 
 
 def test_the_failure_tilt_is_read_from_what_column_bending_prints():

@@ -1,4 +1,5 @@
-"""scripts/seed_record.py on a made-up record and on the committed one."""
+"""calibration/tilting_table/seed_record.py on a made-up record and on the committed one."""
+import csv
 import math
 import os
 import random
@@ -6,27 +7,33 @@ from statistics import NormalDist
 
 import pytest
 from conftest import REPO, load_script
+from toppling.analyse.seeds import within
 
-record = load_script("seed_record")
+record = load_script("calibration/tilting_table/seed_record.py")
 
-MADE_UP = """Some text.
+MADE_UP = record.read_rows("""seed,size,failure_tilt_deg,lower_bound,line,note
+1,coarse,30,0,10,
+1,"fine, a gap",34,0,20,
+2,coarse,40,0,11,
+2,"fine, a gap",,0,,stopped: the ramp broke 5 bonds
+3,coarse,35,0,12,
+3,"fine, a gap",36,0,22,
+4,coarse,39,0,13,
+4,"fine, a gap",35,0,23,
+""".splitlines())
+STOPPED = [dict(row, failure_tilt_deg="40", lower_bound="1", note="stood at 38°")
+           if (row["seed"], row["size"]) == ("4", "fine, a gap") else row for row in MADE_UP]  # seed 4 fine unfailed
 
-**Every seed at 95 kPa.** The run each seed counts with:
 
-| seed | coarse: failure tilt (°) (line) | fine, a gap: failure tilt (°) (line) |
-|---|---|---|
-| 1 | 30 (10) | 34 (20) |
-| 2 | 40 (11) | – (stopped: the ramp broke 5 bonds) |
-| 3 | 35 (12) | 36 (22) |
-| 4 | 39 (13) | 35 (23) |
-
-Text after the table, | with a bar.
-""".splitlines()
+def write_record(path, rows) -> None:
+    with open(path, "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=list(rows[0]))
+        writer.writeheader()
+        writer.writerows(rows)
 
 
 FINE, COARSE = [34.0, 36.0, 35.0], [30.0, 40.0, 35.0, 39.0]  # the made-up record's columns
 SPREAD = 62 / 3 + 1  # their two sample variances
-STOPPED = [line.replace("| 35 (23) |", "| ≥ 40 (23; stood at 38°) |") for line in MADE_UP]  # seed 4 fine unfailed
 
 
 def test_the_record_is_read_by_column_and_a_seed_not_run_is_left_out():
@@ -35,14 +42,14 @@ def test_the_record_is_read_by_column_and_a_seed_not_run_is_left_out():
 
 def test_a_seed_stopped_before_it_failed_is_a_lower_bound_kept_apart_from_the_tilts():
     assert record.read_record(STOPPED) == {"coarse": COARSE, "fine, a gap": [34.0, 36.0]}
-    bounds = record.read_record(STOPPED, record.BOUND_CELL)
+    bounds = record.read_record(STOPPED, bounds=True)
     assert bounds == {"coarse": [], "fine, a gap": [40.0]}
     assert record.with_bounds(record.read_record(STOPPED), bounds)["fine, a gap"] == [34.0, 36.0, 40.0]
 
 
 def test_main_prints_the_verdicts_again_with_the_stopped_seeds_at_their_bounds(tmp_path, capsys):
-    path = tmp_path / "record.md"
-    path.write_text("\n".join(STOPPED))
+    path = tmp_path / "record.csv"
+    write_record(path, STOPPED)
     record.main(str(path))
     out = capsys.readouterr().out
     assert "(fine, a gap 1) at their lower bounds" in out
@@ -63,9 +70,9 @@ def test_the_report_gives_each_size_its_verdict_and_the_size_check():
 
 
 def measured_chance_of_yes(difference: float, se: float, draws: int = 20000) -> float:
-    """How often collect.within reads "yes" for measured differences drawn about ``difference``."""
+    """How often toppling.analyse.seeds.within reads "yes" for measured differences drawn about ``difference``."""
     rng = random.Random(4)
-    hits = sum(record.collect.within(rng.gauss(difference, se), se, 2.0) == "yes" for _ in range(draws))
+    hits = sum(within(rng.gauss(difference, se), se, 2.0) == "yes" for _ in range(draws))
     return hits / draws
 
 
@@ -114,23 +121,17 @@ def test_the_paired_row_is_the_mean_of_the_per_seed_differences():
 
 
 def test_main_prints_the_paired_difference_after_the_size_check(tmp_path, capsys):
-    path = tmp_path / "record.md"
-    path.write_text("\n".join(MADE_UP))
+    path = tmp_path / "record.csv"
+    write_record(path, MADE_UP)
     record.main(str(path))
     out = capsys.readouterr().out
     assert out.index("| size check |") < out.index("| fine, a gap − coarse | 3 | 0.55 | +0.33 ± 2.33 |")
 
 
-def test_a_file_without_the_record_names_what_is_missing():
-    with pytest.raises(ValueError, match="Every seed at 95 kPa"):
-        record.read_record(["| a | b |"])
-
-
 def test_the_committed_record_lists_seeds_1_to_n_with_a_coarse_tilt_or_bound_for_each():
-    with open(os.path.join(REPO, "docs", "tilting_table.md")) as f:
-        lines = f.read().splitlines()
-    _, rows = record.collect.record_table(lines, record.RECORD_HEADING)
-    seeds = [int(row[0]) for row in rows]
+    with open(os.path.join(REPO, "calibration", "tilting_table", "records", "ideal_seeds.csv"), newline="") as f:
+        rows = record.read_rows(f)
+    seeds = list(dict.fromkeys(int(row["seed"]) for row in rows))
     assert seeds == list(range(1, len(seeds) + 1))
-    tilts, bounds = record.read_record(lines), record.read_record(lines, record.BOUND_CELL)
-    assert len(tilts["R 1–4 mm"]) + len(bounds.get("R 1–4 mm", [])) == len(seeds)
+    tilts, bounds = record.read_record(rows), record.read_record(rows, bounds=True)
+    assert len(tilts["R 1–4 mm"]) + len(bounds["R 1–4 mm"]) == len(seeds)

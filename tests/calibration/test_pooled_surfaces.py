@@ -1,4 +1,4 @@
-"""scripts/pooled_surfaces.py on made-up summaries (six runs on two surfaces that each alone
+"""calibration/tilting_table/pooled_surfaces.py on made-up summaries (six runs on two surfaces that each alone
 falls short of showing), on a made-up and the committed record, and the rule's verdict."""
 import json
 import math
@@ -10,7 +10,7 @@ import pytest
 from conftest import load_script
 from toppling.analyse import failure
 
-pooled = load_script("pooled_surfaces")
+pooled = load_script("calibration/tilting_table/pooled_surfaces.py")
 THESIS = {"failure_tilt_deg": 19.0}
 
 
@@ -42,16 +42,9 @@ def test_the_runs_of_a_pattern_are_pooled_and_the_cut_found(tmp_path, capsys):
     assert out[-2].startswith("the thesis' run among these 6: ")
 
 
-MADE_UP_RECORD = """Text.
-
-**Every random draw's failure points.** Made up:
-
-| line | draw | failure tilt (°) | failure points (mm from the toe : mm high) |
-|---|---|---|---|
-| 7 | layout 1, packing 2 | ≤ 11 | 29:8, 75.5:25 |
-| 8 | layout 2, packing 1 | 21 | 30:-4 |
-
-After.
+MADE_UP_RECORD = """line,draw,failure_tilt_deg,upper_bound,failure_points_mm
+7,"layout 1, packing 2",11,1,29:8 75.5:25
+8,"layout 2, packing 1",21,0,30:-4
 """.splitlines()
 
 
@@ -66,8 +59,8 @@ def test_the_record_gives_each_line_its_points_in_the_slope_frame_in_metres():
 
 
 def test_the_failure_tilt_over_the_record_leaves_an_upper_bound_out_of_the_mean_and_counts_it_outside():
-    tilts = ["≤ 11", "15", "21", "23", "19"]  # mean 19.5 ± 3.4 over the four, SE 1.7
-    record = MADE_UP_RECORD[:6] + [f"| {n} | draw {n} | {t} | 30:5 |" for n, t in enumerate(tilts)]
+    tilts = [("11", 1), ("15", 0), ("21", 0), ("23", 0), ("19", 0)]  # mean 19.5 ± 3.4 over the four, SE 1.7
+    record = MADE_UP_RECORD[:1] + [f"{n},draw {n},{t},{bound},30:5" for n, (t, bound) in enumerate(tilts)]
     line = pooled.failure_tilt_line(pooled.read_record(record))
     assert line == ("failure tilt over 4 runs: 19.5 ± 3.4° (15–23°), 2 of 5 within 3° of the thesis' 19°, ≤ 11 left "
                     "out; mean − thesis +0.5 ± 1.7: undecided")
