@@ -6,7 +6,8 @@ Rock dictionaries hold ParallelBondMat's keyword arguments (SI units: Pa, kg/m3,
 import math
 
 # ---- Chapter 4: verification ----
-TABLE_4_1 = dict(radius=50.0, density=1000.0, kn=1.35e9, kn_boundary=1.35e11, drop=1.0, g=9.81)  # m, kg/m3, N/m, m
+TABLE_4_1 = dict(radius=50.0, density=1000.0, kn=1.35e9, kn_boundary=1.35e11, drop=1.0, g=9.81,
+                 dt=3e-4)  # m, kg/m3, N/m, N/m, m, m/s2, s
 TABLE_4_1_IMPACT_VELOCITY = 4.4307  # [m/s] HDPAC
 INCH = 0.0254  # [m]
 TABLE_4_2 = dict(length=200 * INCH, thickness=1 * INCH, depth=16 * INCH, young=68.95e9, shear_modulus=26e9,
@@ -15,9 +16,14 @@ TABLE_4_3 = dict(force=4448.0, moment=11300.0, hdpac_tip_mm=34.715)  # [N, N m, 
 TABLE_4_4 = dict(density=2630.0, young=69.9e9, knKs=1.5, frictionAngle=math.atan(0.5), bondRadiusMultiplier=1.0,
                  bondYoung=69.9e9, bondKnKs=1.5, bondTensileStrength=145e6, bondCohesion=155e6, thickness=1.0)
 LAC_DU_BONNET_SPECIMEN = (0.062, 0.155)  # width, height [m] (the laboratory sample, §4.3)
+LAC_DU_BONNET_DISCS = dict(d_avg=0.745e-3, d_ratio=1.66)  # mean diameter [m], Dmax/Dmin (Table 4-4)
 TABLE_4_5 = {"thesis_hdpac": dict(young_modulus=62e9, poisson_ratio=0.231, ucs=187.5e6),  # [Pa, -, Pa]
              "pfc2d": dict(young_modulus=70.9e9, poisson_ratio=0.237, ucs=199.1e6)}
 TABLE_4_6 = dict(b=0.11, h=0.32)  # block on an incline [m]
+# the blocks of §4.4: Table 5-6's stiffnesses and damping (bonds unbreakable)
+TABLE_5_6_ROCK = dict(young=15e6, knKs=1.4, density=2340.0, bondYoung=15.9e6, bondKnKs=1.8, normalDamping=0.13,
+                      bondNormalDamping=0.2)
+PACKING_R_RATIO = 2.5  # Rmax / Rmin of §5.2.3 (R 1-2.5 mm)
 
 # ---- Chapter 5: the block material (Table 5-1) ----
 TABLE_5_1 = {  # tests 1-3

@@ -14,9 +14,7 @@ os.environ["OMP_NUM_THREADS"] = "1"  # bitwise-reproducible runs (save/load test
 import yade  # noqa: E402,F401  (loads the plugin-enabled YADE, our classes included)
 from yade import O  # noqa: E402
 
-# rock of the block-on-a-joint tests (toppling.models.incline): Table 5-2's bond stiffness and damping
-ROCK = dict(young=15e6, knKs=1.4, density=2340.0, bondYoung=15.9e6, bondKnKs=1.8, normalDamping=0.13,
-            bondNormalDamping=0.2)
+from examples.params import TABLE_5_6_ROCK as ROCK  # noqa: E402  (the block-on-a-joint tests' rock)
 
 
 @pytest.fixture

@@ -24,20 +24,18 @@ import math
 from yade import O
 from yade.utils import readParamsFromTable
 
+from examples import params
+from toppling.build import engines
 from toppling.io import output
 from toppling.load import tilting
 from toppling.models import incline
 from toppling.run.steps import check_stable, run_steps
 
-readParamsFromTable(b=0.11, h=0.32, alpha=26.0, phi=26.5, rmax=0.008, smooth=1, duration=0.6, seed=1,
+readParamsFromTable(**params.TABLE_4_6, alpha=26.0, phi=26.5, rmax=0.008, smooth=1, duration=0.6, seed=1,
                     out="results/block_on_incline", noTableOk=True)
 from yade.params import table  # noqa: E402  (filled by readParamsFromTable)
 
-R_RATIO = 2.5          # Rmax / Rmin, thesis §5.2.3 (R 1-2.5 mm)
-ROCK = dict(young=15e6, knKs=1.4, density=2340.0, bondYoung=15.9e6, bondKnKs=1.8, normalDamping=0.13,
-            bondNormalDamping=0.2)  # Table 5-6 stiffnesses; bonds unbreakable here
-
-setup = incline.build(table.b, table.h, table.rmax / R_RATIO, table.rmax, ROCK, table.phi, smooth=bool(table.smooth),
+setup = incline.build(table.b, table.h, table.rmax / params.PACKING_R_RATIO, table.rmax, params.TABLE_5_6_ROCK, table.phi, smooth=bool(table.smooth),
                       seed=table.seed)
 tilting.set_tilt(table.alpha)
 a, t_tilt = math.radians(table.alpha), O.time
@@ -60,7 +58,7 @@ mode = "slide+topple" if slides and topples else "slide" if slides else "topple"
 t_end = history[-1][0] - t_tilt
 # Sliding from rest at constant acceleration: x = a t^2 / 2 (closed form g (sin a - tan phi cos a)).
 acceleration = output.comparison(2 * translation / t_end**2,
-                                 tilting.G * (math.sin(a) - math.tan(math.radians(table.phi)) * math.cos(a)), "m/s2")
+                                 engines.G * (math.sin(a) - math.tan(math.radians(table.phi)) * math.cos(a)), "m/s2")
 output.write_summary(table.out, output.table_inputs(table), mode=mode, translation=translation, rotation_deg=rotation,
                      acceleration=acceleration,
                      discs=len(setup.block) + len(setup.base), steps=O.iter,

@@ -18,19 +18,20 @@ from yade import O
 from yade.utils import readParamsFromTable
 from yade.wrapper import ParallelBondMat
 
+from examples import params
 from toppling.build import bonding, engines
 from toppling.build.discs import disc
 from toppling.io import output
 from toppling.run.steps import run_steps
 
-readParamsFromTable(force=4448.0, moment=11300.0, young=68.95e9, shear_modulus=26e9, discs=11,
-                    out="results/cantilever", noTableOk=True)
+BEAM, LOAD = params.TABLE_4_2, params.TABLE_4_3
+readParamsFromTable(force=LOAD["force"], moment=LOAD["moment"], young=BEAM["young"], shear_modulus=BEAM["shear_modulus"],
+                    discs=11, out="results/cantilever", noTableOk=True)
 from yade.params import table  # noqa: E402  (filled by readParamsFromTable)
 
-INCH = 0.0254
-L, T, H = 200 * INCH, 1 * INCH, 16 * INCH
+L, T, H = BEAM["length"], BEAM["thickness"], BEAM["depth"]
 R = L / (2 * (table.discs - 1))
-mat = ParallelBondMat(young=table.young, density=2700.0, thickness=T, bondYoung=table.young,
+mat = ParallelBondMat(young=table.young, density=BEAM["density"], thickness=T, bondYoung=table.young,
                       bondRadiusMultiplier=(H / 2) / R, bondKnKs=table.young / table.shear_modulus,
                       frictionAngle=0.0)
 ids = [O.bodies.append(disc((2 * R * i, 0), R, mat, fixed=(i == 0))) for i in range(table.discs)]
@@ -53,7 +54,7 @@ I = T * H**3 / 12
 reference = table.force * L**3 / (3 * table.young * I) + table.moment * L**2 / (2 * table.young * I)
 result = output.comparison(deflection[-1] * 1e3, reference * 1e3, "mm")
 output.write_summary(table.out, output.table_inputs(table), **result, bonds=bonds, steps=O.iter,
-                     thesis_hdpac_mm=34.715)
+                     thesis_hdpac_mm=LOAD["hdpac_tip_mm"])
 fig, ax = output.figure("x (m)", "deflection (mm)", "Cantilever, Tables 4-2/4-3")
 xs = [O.bodies[i].state.pos[0] for i in ids]
 ax.plot(xs, [O.bodies[i].state.displ()[1] * 1e3 for i in ids], "o-", label="bonded discs")

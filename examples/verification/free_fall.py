@@ -17,13 +17,13 @@ from yade import O, utils
 from yade.utils import readParamsFromTable
 from yade.wrapper import ParallelBondMat, PyRunner
 
+from examples import params
 from toppling.build import engines
 from toppling.build.discs import disc
 from toppling.io import output
 from toppling.run.steps import run_steps
 
-readParamsFromTable(radius=50.0, density=1000.0, kn=1.35e9, kn_boundary=1.35e11, drop=1.0,
-                    dt=3e-4, steps=40000, g=9.81, out="results/free_fall", noTableOk=True)
+readParamsFromTable(**params.TABLE_4_1, steps=40000, out="results/free_fall", noTableOk=True)
 from yade.params import table  # noqa: E402  (filled by readParamsFromTable)
 
 THICKNESS = 1.0
@@ -65,7 +65,7 @@ bounce_error = max(abs(h - table.drop) / table.drop for h in apexes) if apexes e
 result = output.comparison(v_hit, v_ref, "m/s")
 output.write_summary(table.out, output.table_inputs(table), **result,
                      bounce_heights=apexes, bounces=len(apexes), bounce_height_max_rel_error=bounce_error,
-                     thesis_hdpac={"impact_velocity": 4.4307})
+                     thesis_hdpac={"impact_velocity": params.TABLE_4_1_IMPACT_VELOCITY})
 fig, ax = output.figure("time (s)", "gap to boundary (m)", "Free fall, Table 4-1")
 ax.plot(time, height)
 output.save_figure(fig, table.out, "height")

@@ -16,31 +16,27 @@ Reported next to Table 4-5: E, nu (secant 10-50 % of the peak), q_u; thesis HDPA
     ./yade-batch -j1 --lines 3,4 examples/verification/lac_du_bonnet.table examples/verification/lac_du_bonnet.py
                                                                # half and quarter size (scale 0.5, 0.25)
 """
-import math
-
 from yade import O
 from yade.utils import readParamsFromTable
 from yade.wrapper import ParallelBondMat
 
+from examples import params
 from toppling.build import engines
 from toppling.io import output
 from toppling.models import specimen
 
-readParamsFromTable(scale=1.0, d_avg=0.745e-3, porosity=0.18, bond_gap=0.1, relax_steps=500, velocity=0.05,
+readParamsFromTable(scale=1.0, d_avg=params.LAC_DU_BONNET_DISCS["d_avg"], porosity=0.18, bond_gap=0.1, relax_steps=500, velocity=0.05,
                     local_damping=0.7, seed=1, out="results/lac_du_bonnet", noTableOk=True)
 from yade.params import table  # noqa: E402  (filled by readParamsFromTable)
 
-D_RATIO = 1.66
-WIDTH, HEIGHT = 0.062, 0.155
-TABLE_4_4 = dict(density=2630.0, young=69.9e9, knKs=1.5, frictionAngle=math.atan(0.5), bondRadiusMultiplier=1.0,
-                 bondYoung=69.9e9, bondKnKs=1.5, bondTensileStrength=145e6, bondCohesion=155e6, thickness=1.0)
-THESIS = dict(young_modulus=62e9, poisson_ratio=0.231, ucs=187.5e6)
-PFC2D = dict(young_modulus=70.9e9, poisson_ratio=0.237, ucs=199.1e6)
+D_RATIO = params.LAC_DU_BONNET_DISCS["d_ratio"]
+WIDTH, HEIGHT = params.LAC_DU_BONNET_SPECIMEN
+THESIS, PFC2D = params.TABLE_4_5["thesis_hdpac"], params.TABLE_4_5["pfc2d"]
 
 if not 0 < table.scale <= 1:
     raise ValueError(f"scale = {table.scale} is invalid: it must be in (0, 1]")
 rmin = table.d_avg / (1 + D_RATIO)  # D_avg = (Dmin + Dmax) / 2
-rock = ParallelBondMat(**TABLE_4_4)
+rock = ParallelBondMat(**params.TABLE_4_4)
 spec = specimen.build_specimen(table.scale * WIDTH, table.scale * HEIGHT, rmin, D_RATIO * rmin, table.porosity,
                                   rock, table.relax_steps, table.bond_gap, table.seed)
 curve = specimen.compress(spec, table.velocity, local_damping=table.local_damping)
@@ -53,8 +49,8 @@ output.write_summary(table.out, output.table_inputs(table), ours=ours, thesis_hd
                      steps=O.iter)
 fig, ax = output.figure("axial strain (%)", "stress (MPa)", "Lac du Bonnet granite, Table 4-4")
 ax.plot([100 * e for e in curve.axial_strain], [s / 1e6 for s in curve.axial_stress], label="axial stress")
-ax.axhline(THESIS["ucs"] / 1e6, color="k", ls="--", label="thesis q_u 187.5 MPa")
-ax.axhline(PFC2D["ucs"] / 1e6, color="0.5", ls=":", label="PFC2D q_u 199.1 MPa")
+ax.axhline(THESIS["ucs"] / 1e6, color="k", ls="--", label=f"thesis q_u {THESIS['ucs'] / 1e6:g} MPa")
+ax.axhline(PFC2D["ucs"] / 1e6, color="0.5", ls=":", label=f"PFC2D q_u {PFC2D['ucs'] / 1e6:g} MPa")
 ax.legend()
 output.save_figure(fig, table.out, "stress_strain")
 print(f"E {young / 1e9:.1f} GPa (thesis 62, PFC2D 70.9), nu {poisson:.3f} (0.231, 0.237), "

@@ -12,12 +12,14 @@ from yade import O, utils
 from yade.utils import readParamsFromTable
 from yade.wrapper import ParallelBondMat
 
+from examples import params
 from toppling.build import engines
 from toppling.build.discs import disc
 from toppling.io import output
 from toppling.run.steps import run_steps
 
-readParamsFromTable(beta=0.13, radius=0.01, density=2880.0, young=1e8, speed=1.0,
+readParamsFromTable(beta=params.TABLE_5_2_COMMON["normalDamping"], radius=0.01,
+                    density=params.TABLE_5_1_COMMON["density"], young=1e8, speed=1.0,
                     out="results/restitution", noTableOk=True)
 from yade.params import table  # noqa: E402  (filled by readParamsFromTable)
 

@@ -16,6 +16,7 @@ import math
 from yade import O
 from yade.utils import readParamsFromTable
 
+from examples import params
 from toppling.io import output
 from toppling.load import tilting
 from toppling.models import incline
@@ -25,10 +26,8 @@ readParamsFromTable(phi=math.degrees(math.atan(0.4)), rmax=0.012, porosity=0.2, 
                     out="results/tilt_slide", noTableOk=True)
 from yade.params import table  # noqa: E402  (filled by readParamsFromTable)
 
-B, H, R_RATIO = 0.2, 0.05, 2.5
-ROCK = dict(young=15e6, knKs=1.4, density=2340.0, bondYoung=15.9e6, bondKnKs=1.8, normalDamping=0.13,
-            bondNormalDamping=0.2)  # as block_on_incline.py (Table 5-6 stiffnesses)
-setup = incline.build(B, H, table.rmax / R_RATIO, table.rmax, ROCK, table.phi, porosity=table.porosity, seed=table.seed)
+B, H = 0.2, 0.05
+setup = incline.build(B, H, table.rmax / params.PACKING_R_RATIO, table.rmax, params.TABLE_5_6_ROCK, table.phi, porosity=table.porosity, seed=table.seed)
 
 tilting.set_tilt(table.phi - 4)  # first tilt well below atan(mu), then settle there (damped)
 incline.settle(4 * table.stage_time)

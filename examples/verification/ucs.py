@@ -10,12 +10,11 @@ overlap, see README), bond radius multiplier 1 (not given), bond gap `bond_gap` 
 
     ./yade -x -n examples/verification/ucs.py            # test=1 (Table 5-1 column)
 """
-import math
-
 from yade import O
 from yade.utils import readParamsFromTable
 from yade.wrapper import ParallelBondMat
 
+from examples import params
 from toppling.build import engines
 from toppling.io import output
 from toppling.models import specimen
@@ -24,22 +23,12 @@ readParamsFromTable(test=1, rmin=1e-3, rmax=2.5e-3, porosity=0.18, bond_gap=0.1,
                     noTableOk=True)
 from yade.params import table  # noqa: E402  (filled by readParamsFromTable)
 
-# Table 5-1, tests 1-3 (Ec, kn/ks, Ebar, kbar n/s, tensile, cohesion, bond friction).
-TABLE_5_1 = {
-    1: dict(young=12.05e6, knKs=1.3, bondYoung=12e6, bondKnKs=1.8, bondTensileStrength=19.7e3, bondCohesion=25e3,
-            bondFrictionAngle=math.radians(10)),
-    2: dict(young=7.05e6, knKs=1.8, bondYoung=7.0e6, bondKnKs=1.8, bondTensileStrength=13.5e3, bondCohesion=29e3,
-            bondFrictionAngle=math.radians(15)),
-    3: dict(young=13.05e6, knKs=1.3, bondYoung=13e6, bondKnKs=1.8, bondTensileStrength=19.7e3, bondCohesion=25e3,
-            bondFrictionAngle=math.radians(15)),
-}
-COMMON = dict(density=2880.0, frictionAngle=math.atan(0.45), bondNormalDamping=0.2, normalDamping=0.13)
-LAB_UCS = 56.7e3  # Pa, mean of the laboratory tests
-WIDTH, HEIGHT, T = 0.047, 0.10, 1.0
+TABLE_5_1, LAB_UCS = params.TABLE_5_1, params.LAB_UCS
+(WIDTH, HEIGHT), T = params.UCS_SPECIMEN, 1.0
 
 if table.test not in TABLE_5_1:
     raise ValueError(f"test = {table.test} is invalid: it must be 1, 2 or 3 (Table 5-1 columns)")
-rock = ParallelBondMat(thickness=T, **COMMON, **TABLE_5_1[table.test])
+rock = ParallelBondMat(thickness=T, **params.TABLE_5_1_COMMON, **TABLE_5_1[table.test])
 spec = specimen.build_specimen(WIDTH, HEIGHT, table.rmin, table.rmax, table.porosity, rock, table.relax_steps,
                                   table.bond_gap, table.seed)
 curve = specimen.compress(spec, table.velocity)
