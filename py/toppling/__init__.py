@@ -17,7 +17,7 @@ classes, imported with ``from yade import *``.
 import importlib
 
 _API = {
-    "disc": "build.discs", "add_discs": "build.discs", "engines": "build.engines",
+    "disc": "build.discs", "add_discs": "build.discs", "engines": "build.engines", "broken_bonds": "build.engines",
     "pack_polygon": "build.packing", "region": "build.geometry", "bond_within_gap": "build.bonding",
     "install_joints": "build.joints", "fix": "build.boundary", "near": "build.boundary",
     "ColumnLayout": "build.columns", "set_tilt": "load.tilting", "run_steps": "run.steps",
