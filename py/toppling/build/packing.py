@@ -205,3 +205,18 @@ def pack_polygon(polygon: PolygonRegion, rmin: float, rmax: float, porosity: flo
         raise ValueError(f"porosity = {porosity} is unreachable with radii {rmin}..{rmax} without locked-in stress: "
                          f"mean overlap {mean_overlap / rmin:.1%} of Rmin (limit {MAX_MEAN_OVERLAP:.0%}); use a larger porosity")
     return Packing(discs, achieved, mean_overlap, time.perf_counter() - started, steps)
+
+
+def pack_predicate(predicate, rmin: float, rmax: float, porosity: float = 0.15, seed: int = 1) -> Packing:
+    """Discs filling any ``yade.pack`` predicate, combined as YADE's are (``a | b``, ``a & b``,
+    ``a - b``; ``toppling.build.geometry.PolygonPredicate`` for a polygon): its bounding box in
+    the xy-plane packed as ``pack_polygon`` does, and the discs wholly inside the predicate at
+    z = 0 kept. The edges of the shape cut the packing (as ``yade.pack.filterSpherePack``
+    does), so the porosity returned is that of the box."""
+    lo, hi = predicate.aabb()
+    if not all(map(math.isfinite, (lo[0], lo[1], hi[0], hi[1]))):
+        raise ValueError("the predicate is unbounded in the xy-plane: intersect it with a bounded one (a & b)")
+    box = PolygonRegion(vertices=[(lo[0], lo[1]), (hi[0], lo[1]), (hi[0], hi[1]), (lo[0], hi[1])])
+    packed = pack_polygon(box, rmin, rmax, porosity, seed)
+    packed.discs = [(x, y, r) for x, y, r in packed.discs if predicate((x, y, 0.0), r)]
+    return packed
