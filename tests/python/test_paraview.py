@@ -1,4 +1,4 @@
-"""The ParaView series reads back with VTK: counts and fields of discs, bonds and joints."""
+"""The ParaView series reads back with VTK: counts and fields of discs, bonds, cracks and joints."""
 import json
 import math
 import os
@@ -54,7 +54,8 @@ def test_series_of_discs_bonds_and_joints(empty_scene, tmp_path):
     pull_until_broken(1)
     run_steps(10)
     paths = series.snapshot()
-    assert [os.path.basename(p) for p in paths] == ["discs_00001.vtu", "bonds_00001.vtu", "joints_00001.vtu"]
+    assert [os.path.basename(p) for p in paths] == ["discs_00001.vtu", "bonds_00001.vtu", "cracks_00001.vtu",
+                                                    "joints_00001.vtu"]
 
     discs = read(paths[0])
     assert discs.GetNumberOfPoints() == 6
@@ -63,11 +64,19 @@ def test_series_of_discs_bonds_and_joints(empty_scene, tmp_path):
     assert list(field(discs, "fixed")) == [1, 1, 1, 1, 1, 1]  # disc 1 is driven
     assert len(field(discs, "block")) == 6
     bonds = read(paths[1])
-    assert bonds.GetNumberOfCells() == 2
-    assert sorted(field(bonds, "state", cells=True)) == [1, 2]  # C intact, A broken in tension
-    assert len(field(bonds, "sigma_max", cells=True)) == 2
-    joint_grid = read(paths[2])
+    assert bonds.GetNumberOfCells() == 1  # C intact; A's broken bond is not drawn between its parted discs
+    assert len(field(bonds, "sigma_max", cells=True)) == 1
+    cracks = read(paths[2])  # A's bond, where it broke: between the two discs, across the pull
+    assert cracks.GetNumberOfCells() == 1
+    assert vtk_to_numpy(cracks.GetPoints().GetData())[0][:2] == pytest.approx((0, R), abs=1e-3 * R)
+    assert list(field(cracks, "mode", cells=True)) == [2]  # tension
+    assert field(cracks, "normal", cells=True)[0] == pytest.approx((0, 1, 0), abs=1e-6)
+    assert field(cracks, "size", cells=True)[0] == pytest.approx(2 * R)  # the bond's width, 2 lambda R
+    assert 0 < field(cracks, "time", cells=True)[0] < O.time
+    joint_grid = read(paths[3])  # B's joint, drawn along its trace y = R through the contact
     assert joint_grid.GetNumberOfCells() == 1
+    ends = vtk_to_numpy(joint_grid.GetPoints().GetData())[:, :2]
+    assert sorted(ends[:, 0]) == pytest.approx([3 * R, 5 * R]) and ends[:, 1] == pytest.approx([R, R])
     assert list(field(joint_grid, "set", cells=True)) == [0]
     assert len(field(joint_grid, "slip", cells=True)) == 1
 
@@ -100,22 +109,3 @@ def test_resumed_series_continues_numbering_and_displacements(empty_scene, tmp_p
     assert field(discs, "displacement")[0] == pytest.approx((0.5 * R, 0, 0))
     entries = ET.parse(tmp_path / "discs.pvd").getroot().find("Collection")
     assert [e.get("file") for e in entries] == ["discs_00000.vtu", "discs_00001.vtu"]
-
-
-def pulled_bond() -> None:
-    """Two fixed discs bonded, the upper one moving off along +y: a bond in growing tension."""
-    rock = material()
-    O.bodies.append([disc((0, 0), R, rock, fixed=True), disc((0, 2 * R), R, rock, fixed=True)])
-    O.engines = engines.engines(gravity=(0, 0, 0))
-    bonding.bond_within_gap(1e-9)
-    boundary.move([1], (0, 1e-3))
-
-
-def save_bonded_run(folder, ids, reference, equilibrium=None):
-    """A tilting-table run's checkpoint as the scripts read it: the scene, and in checkpoint.json
-    the discs as bonded (the ParaView series' reference) and the last equilibrium's positions."""
-    O.save(str(folder / "checkpoint.yade.bz2"))
-    (folder / "checkpoint.json").write_text(json.dumps(
-        {"ids": ids, "reference": equilibrium or reference, "series": {"ids": ids, "reference": reference}}))
-
-

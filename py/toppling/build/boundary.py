@@ -26,6 +26,12 @@ def near(segments: Iterable[tuple[Point, Point]], distance: float, ids: Sequence
             if b is not None and any(_distance(b.state.pos, a, c) <= distance for a, c in segments)]
 
 
+def is_held(body) -> bool:
+    """Whether a boundary condition prescribes the body's motion: not dynamic, or x or y blocked
+    (a fixed layer, a platen)."""
+    return not body.dynamic or bool(set(body.state.blockedDOFs) & {"x", "y"})
+
+
 def fix(ids: Iterable[int], dofs: str = "xy") -> None:
     """Hold the discs' x (``dofs='x'``) or x and y (``'xy'``) still; rotation stays free."""
     if dofs not in ("x", "y", "xy"):

@@ -61,6 +61,24 @@ def install_joints(sets: Sequence[tuple[JointSetGeometry, SmoothJointMat]], lo, 
     return system
 
 
+def joint_traces(positions: dict[int, tuple[float, float]]) -> list[tuple[tuple, tuple, int]]:
+    """The installed joints as drawn on a picture: per joint pair of the scene's JointSystem, a
+    segment of its set's joint line through the pair's midpoint, as wide as the smaller disc,
+    with the discs at ``positions`` (id -> (x, y); e.g. as built). ((x0, y0), (x1, y1), set)."""
+    system = rock_functor().joints
+    if system is None:
+        return []
+    normals = [tuple(O.materials[m].normal)[:2] for m in system.jointMaterials]
+    traces = []
+    for i, j, s in zip(system.pairId1, system.pairId2, system.pairSet):
+        (xi, yi), (xj, yj) = positions[i][:2], positions[j][:2]
+        half = min(O.bodies[i].shape.radius, O.bodies[j].shape.radius)
+        along = (-normals[s][1] * half, normals[s][0] * half)
+        mid = (0.5 * (xi + xj), 0.5 * (yi + yj))
+        traces.append(((mid[0] - along[0], mid[1] - along[1]), (mid[0] + along[0], mid[1] + along[1]), s))
+    return traces
+
+
 def assign_pieces(system: JointSystem) -> None:
     """Split the blocks of ``system`` into pieces of rock: discs joined by a chain of intact
     bonds within one block. Joints are what cut bonds, so a piece is bounded by joints. A disc

@@ -1,4 +1,4 @@
-"""ParaView time series of a run: ``discs.pvd``, ``bonds.pvd``, ``joints.pvd`` + ``.vtu`` files.
+"""ParaView time series of a run: ``discs.pvd``, ``bonds.pvd``, ``cracks.pvd``, ``joints.pvd`` + ``.vtu`` files.
 
 The ``.vtu`` files are written by VTK's XML writer; each ``.pvd`` is the small XML index
 ParaView reads a time series from (VTK has no writer for it), rewritten at every snapshot so
@@ -8,10 +8,14 @@ that a run stopped early can still be opened.
   velocity, block id, ``fixed`` 1 where a boundary condition prescribes the disc's motion
   (a non-dynamic disc, or x or y blocked: the table's fixed layer, platens) (Glyph with the
   radius as scale to see discs);
-* bonds: lines between bonded discs, ``state`` 1 intact, 2 broken in tension, 3 broken in
-  shear (broken bonds from the law's break records), ``sigma_max`` and ``tau`` [Pa];
-* joints: lines between the discs of each smooth-joint contact with joint set, normal and
-  shear force [N] and accumulated slip [m].
+* bonds: lines between the discs of each intact bond, ``sigma_max`` and ``tau`` [Pa];
+* cracks: one point per broken bond, where and when it broke (the law's break records), with
+  ``mode`` (2 tension, 3 shear), ``time`` [s], ``normal`` (the bond's axis) and ``size`` (its
+  width across that axis, the crack's length) [m]: a broken bond is a crack where it broke, not
+  a line between discs that have since parted;
+* joints: each smooth-joint contact as a segment of the joint's trace through its contact point
+  (along the joint, as wide as the contact), with its ``set``, normal and shear force [N] and
+  accumulated slip [m].
 """
 from __future__ import annotations
 
@@ -26,9 +30,9 @@ import numpy as np
 from yade import O
 from yade.wrapper import ParallelBondPhys, SmoothJointPhys, Sphere
 
-from toppling.build import engines
+from toppling.build import boundary, engines
 
-KINDS = ("discs", "bonds", "joints")
+KINDS = ("discs", "bonds", "cracks", "joints")
 
 
 def _grid(points: np.ndarray, cells: list[tuple[int, ...]], cell_type: int, point_data: dict, cell_data: dict):
@@ -77,10 +81,10 @@ class ParaViewSeries:
         return {"ids": self.ids, "reference": self.reference.tolist(), "times": self.times}
 
     def snapshot(self) -> list[str]:
-        """Write the three ``.vtu`` files of this moment and update the ``.pvd`` indexes."""
+        """Write the ``.vtu`` files of this moment (one per kind) and update the ``.pvd`` indexes."""
         n = len(self.times)
         pos = np.array([tuple(O.bodies[i].state.pos) for i in self.ids])
-        grids = {"discs": self._discs(pos), "bonds": self._bonds(pos), "joints": self._joints(pos)}
+        grids = {"discs": self._discs(pos), "bonds": self._bonds(pos), "cracks": self._cracks(), "joints": self._joints()}
         paths = []
         for kind, grid in grids.items():
             paths.append(os.path.join(self.folder, f"{kind}_{n:05d}.vtu"))
@@ -98,35 +102,41 @@ class ParaViewSeries:
             "displacement": pos - self.reference,
             "velocity": np.array([tuple(b.state.vel) for b in bodies]),
             "block": block,
-            "fixed": [int(not b.dynamic or bool(set(b.state.blockedDOFs) & {"x", "y"})) for b in bodies],
+            "fixed": [int(boundary.is_held(b)) for b in bodies],
         }, {})
 
     def _bonds(self, pos: np.ndarray):
-        cells, state, sigma, tau = [], [], [], []
+        cells, sigma, tau = [], [], []
         for I in O.interactions:
             if I.isReal and isinstance(I.phys, ParallelBondPhys) and I.phys.bondState == 1:
                 cells.append((self.index[I.id1], self.index[I.id2]))
-                state.append(1)
                 sigma.append(I.phys.bondSigmaMax)
                 tau.append(I.phys.bondTauMax)
-        law = engines.bond_law()
-        for i, j, mode in zip(law.breakId1, law.breakId2, law.breakMode):
-            cells.append((self.index[i], self.index[j]))
-            state.append(mode)
-            sigma.append(0.0)
-            tau.append(0.0)
-        return _grid(pos, cells, VTK_LINE, {}, {"state": state, "sigma_max": sigma, "tau": tau})
+        return _grid(pos, cells, VTK_LINE, {}, {"sigma_max": sigma, "tau": tau})
 
-    def _joints(self, pos: np.ndarray):
-        cells, data = [], {"set": [], "normal_force": [], "shear_force": [], "slip": []}
+    @staticmethod
+    def _cracks():
+        law = engines.bond_law()
+        points = np.array([tuple(p) for p in law.breakPosition]).reshape(-1, 3)
+        return _grid(points, [(k,) for k in range(len(points))], VTK_VERTEX, {}, {
+            "mode": list(law.breakMode), "time": list(law.breakTime),
+            "normal": np.array([tuple(v) for v in law.breakNormal]).reshape(-1, 3), "size": list(law.breakSize)})
+
+    @staticmethod
+    def _joints():
+        ends, data = [], {"set": [], "normal_force": [], "shear_force": [], "slip": []}
         for I in O.interactions:
             if I.isReal and isinstance(I.phys, SmoothJointPhys):
-                cells.append((self.index[I.id1], self.index[I.id2]))
+                along = np.cross((0.0, 0.0, 1.0), tuple(I.phys.jointNormal))
+                half = min(O.bodies[I.id1].shape.radius, O.bodies[I.id2].shape.radius)  # the contact's half-width
+                centre = np.array(tuple(I.geom.contactPoint))
+                ends += [centre - half * along, centre + half * along]
                 data["set"].append(I.phys.jointSet)
                 data["normal_force"].append(I.phys.jointNormalForce)
                 data["shear_force"].append(I.phys.jointShearForce)
                 data["slip"].append(I.phys.slip)
-        return _grid(pos, cells, VTK_LINE, {}, data)
+        return _grid(np.array(ends).reshape(-1, 3), [(2 * k, 2 * k + 1) for k in range(len(ends) // 2)], VTK_LINE, {},
+                     data)
 
     def _write_index(self, kind: str) -> None:
         root = ET.Element("VTKFile", type="Collection", version="0.1", byte_order="LittleEndian")

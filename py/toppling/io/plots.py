@@ -1,5 +1,6 @@
-"""PNG figures every slope case writes: the slope coloured by displacement with cracks and the
-fitted failure surface, the loading history, and monitoring-point histories (Fig 5-21 style)."""
+"""PNG figures every slope case writes: the model (joints by set, fixed discs, the displacement
+at rest), the slope coloured by displacement with cracks, the fitted failure surface and the
+zones, the loading history, and monitoring-point histories (Fig 5-21 style)."""
 from __future__ import annotations
 
 from typing import Optional, Sequence
@@ -13,24 +14,72 @@ from toppling.analyse.failure import Plane
 from toppling.run.monitoring import MonitoringPoints
 
 
+ZONE_COLOURS = {"no-movement": "0.5", "stable": "green", "toppling": "red", "sliding": "blue", "empty": "0.8"}
+SET_COLOURS = ("black", "darkorange", "purple", "teal")
+
+
+def _discs(ax, fig, centres: np.ndarray, radii: Sequence[float], displacement: np.ndarray, what: str) -> None:
+    """Discs coloured by |displacement| [mm] up to its 99th percentile (a few escaped discs must
+    not wash out the field), or plain grey with a note where nothing moved."""
+    radii = np.asarray(radii)
+    magnitude = 1e3 * np.linalg.norm(displacement, axis=1)
+    moved = magnitude.size and np.percentile(magnitude, 99) > 1e-6
+    colours = dict(array=magnitude, cmap="viridis") if moved else dict(facecolors="0.75")
+    discs = EllipseCollection(2 * radii, 2 * radii, np.zeros_like(radii), units="xy", offsets=centres,
+                              transOffset=ax.transData, **colours)
+    ax.add_collection(discs)
+    if moved:
+        discs.set_clim(0, np.percentile(magnitude, 99))
+        fig.colorbar(discs, ax=ax, label=f"{what} (mm), 99th percentile at the top", extend="max")
+    else:
+        ax.text(0.01, 0.95, f"{what}: none", transform=ax.transAxes, fontsize=7)
+
+
+def _view(ax, centres: np.ndarray, limits: Optional[tuple[float, float, float, float]]) -> None:
+    """``limits`` (xmin, xmax, ymin, ymax, e.g. from around()) fixes the view, so that discs that
+    fell off the model do not shrink it to a dot; the figure says how many discs it leaves out."""
+    ax.set_aspect("equal")
+    ax.autoscale_view()
+    if limits is not None:
+        ax.set_xlim(*limits[:2])
+        ax.set_ylim(*limits[2:])
+        left_out = outside(centres, limits)
+        if left_out:
+            ax.text(0.01, 0.01, f"{left_out} discs outside the view", transform=ax.transAxes, fontsize=7)
+
+
+def model(out: str, name: str, centres: np.ndarray, radii: Sequence[float], displacement: np.ndarray,
+          held: Sequence[bool], joints: Sequence[tuple], set_names: Sequence[str] = (), title: str = "",
+          limits: Optional[tuple[float, float, float, float]] = None) -> str:
+    """The model a reader must understand: discs at ``centres`` coloured by ``displacement`` (at
+    rest, e.g. the last equilibrium), the discs a boundary condition holds (``held``) marked, and
+    the joints (((x0, y0), (x1, y1), set) traces, ``toppling.build.joints.joint_traces``) by set."""
+    fig, ax = output.figure("x (m)", "y (m)", title)
+    _discs(ax, fig, centres, radii, displacement, "displacement")
+    held = np.asarray(held, dtype=bool)
+    if held.any():
+        ax.plot(centres[held, 0], centres[held, 1], "s", color="0.2", ms=2, ls="none", label="fixed discs")
+    for s in sorted({t[2] for t in joints}):
+        segments = [(a, b) for a, b, k in joints if k == s]
+        xs = [v for a, b in segments for v in (a[0], b[0], np.nan)]
+        ys = [v for a, b in segments for v in (a[1], b[1], np.nan)]
+        label = set_names[s] if s < len(set_names) else f"joint set {s + 1}"
+        ax.plot(xs, ys, "-", color=SET_COLOURS[s % len(SET_COLOURS)], lw=1.2, label=label)
+    _view(ax, centres, limits)
+    ax.legend(loc="upper right", fontsize=7)
+    return output.save_figure(fig, out, name)
+
+
 def slope(out: str, name: str, centres: np.ndarray, radii: Sequence[float], displacement: np.ndarray,
           cracks: np.ndarray, modes: Sequence[int], planes: Sequence[Plane] = (), toe=(0.0, 0.0),
           title: str = "", limits: Optional[tuple[float, float, float, float]] = None,
-          overall: Optional[Plane] = None) -> str:
+          overall: Optional[Plane] = None, zones: Sequence[tuple[float, float, str]] = ()) -> str:
     """Discs at ``centres`` coloured by |displacement| [mm], cracks (x tension, + shear), the
-    failure planes (given in the slope frame of upright columns: x - toe_x, y) and, dashed, the
-    ``overall`` surface through all the failure points where they split into planes. ``limits``
-    (xmin, xmax, ymin, ymax, e.g. from around()) fixes the view, so that discs that fell off
-    the model do not shrink it to a dot; the figure says how many discs it leaves out."""
+    failure planes (given in the slope frame of upright columns: x - toe_x, y), dashed the
+    ``overall`` surface through all the failure points where they split into planes, and each
+    column's zone ((x, y, zone): written at (x, y), coloured by zone). ``limits`` as in model()."""
     fig, ax = output.figure("x (m)", "y (m)", title)
-    radii = np.asarray(radii)
-    magnitude = 1e3 * np.linalg.norm(displacement, axis=1)
-    discs = EllipseCollection(2 * radii, 2 * radii, np.zeros_like(radii), units="xy", offsets=centres,
-                              transOffset=ax.transData, array=magnitude, cmap="viridis")
-    if magnitude.size and magnitude.max() > 0:  # a few escaped discs must not wash out the field
-        discs.set_clim(0, max(np.percentile(magnitude, 99), 1e-9))
-    ax.add_collection(discs)
-    fig.colorbar(discs, ax=ax, label="displacement (mm), 99th percentile at the top", extend="max")
+    _discs(ax, fig, centres, radii, displacement, "displacement")
     cracks, modes = np.asarray(cracks).reshape(-1, 2), np.asarray(modes)
     for mode, marker, colour, label in ((2, "x", "red", "tensile crack"), (3, "+", "blue", "shear crack")):
         sel = modes == mode
@@ -42,14 +91,10 @@ def slope(out: str, name: str, centres: np.ndarray, radii: Sequence[float], disp
         x = np.array(plane.x_range)
         ax.plot(toe[0] + x, toe[1] + plane.intercept + plane.slope * x, style, lw=width,
                 label=f"{what}: phi = {plane.phi_deg:.1f} deg")
-    ax.set_aspect("equal")
-    ax.autoscale_view()
-    if limits is not None:
-        ax.set_xlim(*limits[:2])
-        ax.set_ylim(*limits[2:])
-        left_out = outside(centres, limits)
-        if left_out:
-            ax.text(0.01, 0.01, f"{left_out} discs outside the view", transform=ax.transAxes, fontsize=7)
+    for x, y, zone in zones:
+        ax.text(x, y, zone.replace("no-movement", "none"), rotation=90, ha="center", va="bottom", fontsize=6,
+                color=ZONE_COLOURS.get(zone, "k"))
+    _view(ax, centres, limits)
     if len(planes) or len(cracks):
         ax.legend(loc="upper right", fontsize=7)
     return output.save_figure(fig, out, name)

@@ -1,12 +1,13 @@
 """What a finished tilting-table run leaves: ``summary.json``, the figures and its last console
-line, for a slope that failed (its failure surface, zones, S/H and T/H) or stood up to max_tilt."""
+line, for a slope that failed (its failure surface, zones, S/H and T/H, after the post-failure run
+and at the failure's onset) or stood up to max_tilt."""
 from __future__ import annotations
 
 import numpy as np
 from yade import O
 
 from toppling.analyse import failure
-from toppling.build import engines
+from toppling.build import boundary, engines, joints
 from toppling.io import output, plots
 from toppling.run.tilt_run import TiltRun, arrested_text, ramp_warning
 
@@ -21,18 +22,19 @@ def report(run: TiltRun, out: str, thesis: dict, name: str) -> None:
     if warning := ramp_warning(run.state.get("breaks_before_stages") or {}):  # again beside the result it qualifies
         print(warning)
     if run.failure_tilt is None:
-        report_stable(run, out, thesis)
+        report_stable(run, out, thesis, name)
     else:
         report_failure(run, out, thesis, name)
 
 
-def report_stable(run: TiltRun, out: str, thesis: dict) -> None:
+def report_stable(run: TiltRun, out: str, thesis: dict, name: str) -> None:
     """Stable throughout: the summary says so (a sweep goes on) and how far each column top
     moved, which shows what holds the slope; a higher max_tilt continues the run."""
     points, state = run.points, run.state
     tops, record = {label: 1e3 * points.total(label)[-1] for label in points.labels}, dict(thesis=thesis, **run.record())
-    output.write_summary(out, state["inputs"], failure_tilt_deg=None, stable_up_to_deg=state["stages"][-1]["tilt"],
+    output.write_summary(out, state["inputs"], failed=False, failure_tilt_deg=None, stable_up_to_deg=state["stages"][-1]["tilt"],
                          phi_deg=[], s_over_h=None, t_over_h=None, top_displacement_mm=tops, **record)
+    plot_model(run, out, name)
     plots.tilt_history(out, state["energy"], points, None)
     plots.monitoring(out, points, points.labels[::2], normal_dydx=TABLE_NORMAL_DYDX)
     arrested = arrested_text(record["arrested_failures"])
@@ -43,18 +45,21 @@ def report_stable(run: TiltRun, out: str, thesis: dict) -> None:
 def report_failure(run: TiltRun, out: str, thesis: dict, name: str) -> None:
     """The failure's analysis (surfaces, zones, S/H, T/H), summary and figures."""
     state, tilt = run.state, run.failure_tilt
-    result = run.analyse(tilt)
+    result, onset = run.analyse(tilt), run.analyse(tilt, state["onset"])
     summary = dict(
-        failure_tilt_deg=tilt,
+        failed=True, failure_tilt_deg=tilt,
         failed_in_first_stage=len(state["stages"]) == 1,  # then failure_tilt_deg is only an upper bound
         **failure.surface_angles(result),
         planes=len(result["planes"]), two_planes_p=result["split_p"],
         s_over_h=result["s_over_h"], t_over_h=result["t_over_h"],
         zones={failure.column_label(k + 1): z for k, z in enumerate(result["zones"])},
-        failure_points=result["failure_points"], slope_height=result["height"], thesis=thesis, **run.record())
+        failure_points=result["failure_points"], slope_height=result["height"], thesis=thesis,
+        onset={**failure.surface_angles(onset), "s_over_h": onset["s_over_h"], "t_over_h": onset["t_over_h"],
+               "zones": {failure.column_label(k + 1): z for k, z in enumerate(onset["zones"])}},
+        **run.record())
     output.write_summary(out, state["inputs"], **summary)
     phi_text = f"phi = {failure.phi_text(summary)} deg" if summary["phi_deg"] else "no failure surface found"
-    plot_failure(run, out, result, f"{name}: failed at {tilt:.1f} deg, {phi_text}", name)
+    plot_failure(run, out, name, onset, result)
     if summary["failed_in_first_stage"]:
         print(f"WARNING: the first stage ({run.protocol.start_tilt} deg) failed: the failure tilt is at most that; "
               "rerun with a lower start_tilt")
@@ -66,17 +71,55 @@ def report_failure(run: TiltRun, out: str, thesis: dict, name: str) -> None:
           f"{summary['wall_time']:.0f} s")
 
 
-def plot_failure(run: TiltRun, out: str, result: dict, title: str, name: str) -> None:
-    """The slope at the last equilibrium and after the failure (displacement, cracks by mode,
-    fitted surfaces), the tilt history and the monitoring points."""
-    law, points = engines.bond_law(), run.points
-    radii = [O.bodies[i].shape.radius for i in run.ids]
-    view = plots.around(np.array(run.layout.section()), 0.15)  # discs fallen off the table stay out of it
-    cracks = np.array([tuple(p)[:2] for p in law.breakPosition]).reshape(-1, 2)
-    plots.slope(out, "slope_before", np.array(run.state["reference"]), radii, np.zeros((len(run.ids), 2)), [], [],
-                limits=view, title=f"{name} arrangement at the last equilibrium")
-    plots.slope(out, "slope_after", result["now"], radii, result["disp"], cracks, list(law.breakMode),
-                result["planes"], toe=(run.layout.toe_x, 0.0), limits=view, title=title,
-                overall=result["overall"] if len(result["planes"]) > 1 else None)
-    plots.tilt_history(out, run.state["energy"], points, run.failure_tilt)
+JOINT_SETS = ("main joints", "cross (base) joints")  # in the order the tilting-table model installs them
+
+
+def radii(run: TiltRun) -> list[float]:
+    return [O.bodies[i].shape.radius for i in run.ids]
+
+
+def view(run: TiltRun) -> tuple[float, float, float, float]:
+    """The picture's limits: the columns and a margin (discs fallen off the table stay out of it)."""
+    return plots.around(np.array(run.layout.section()), 0.15)
+
+
+def plot_model(run: TiltRun, out: str, name: str) -> None:
+    """``slope_before.png``: the model at its last equilibrium: joints by set, the fixed discs,
+    and how far the discs had moved there since the model was built."""
+    built = run.series.reference[[run.series.index[i] for i in run.ids]][:, :2]
+    at_rest = np.array(run.state["reference"])
+    stood = [s["tilt"] for s in run.state["stages"] if s["outcome"] == "equilibrium"]
+    when = f"{stood[-1]:.0f} deg" if stood else "the level table"
+    plots.model(out, "slope_before", at_rest, radii(run), at_rest - built, [boundary.is_held(O.bodies[i]) for i in run.ids],
+                joints.joint_traces(dict(zip(run.ids, map(tuple, built)))), JOINT_SETS, limits=view(run),
+                title=f"{name} arrangement at the last equilibrium ({when})")
+
+
+def zone_marks(run: TiltRun, zones: list[str]) -> list[tuple[float, float, str]]:
+    """Where each column's zone is written: above its top."""
+    return [(*run.layout.top_centre(k + 1)[:1], run.layout.top_centre(k + 1)[1] + run.rmax, zone)
+            for k, zone in enumerate(zones)]
+
+
+def plot_slope(run: TiltRun, out: str, name: str, result: dict, breaks: int, title: str) -> None:
+    """The slope of ``result`` (TiltRun.analyse): displacement since the last equilibrium, the
+    first ``breaks`` cracks by mode, the fitted surface(s) and the zones by column."""
+    law = engines.bond_law()
+    cracks = np.array([tuple(p)[:2] for p in law.breakPosition][:breaks]).reshape(-1, 2)
+    plots.slope(out, name, result["now"], radii(run), result["disp"], cracks, list(law.breakMode)[:breaks],
+                result["planes"], toe=(run.layout.toe_x, 0.0), limits=view(run), title=title,
+                overall=result["overall"] if len(result["planes"]) > 1 else None,
+                zones=zone_marks(run, result["zones"]))
+
+
+def plot_failure(run: TiltRun, out: str, name: str, onset: dict, after: dict) -> None:
+    """The model, the failure at its onset (the failing stage's end, as the thesis' Fig 5-8) and
+    after the post-failure run, the tilt history and the monitoring points."""
+    tilt, points = run.failure_tilt, run.points
+    plot_model(run, out, name)
+    for picture, result, breaks, when in (("slope_failure", onset, run.state["onset"]["breaks"], "onset of failure"),
+                                          ("slope_after", after, None, "after the post-failure run")):
+        phi = failure.phi_text(failure.surface_angles(result)) if result["planes"] else "-"
+        plot_slope(run, out, picture, result, breaks, f"{name}: {when} at {tilt:.1f} deg, phi = {phi} deg")
+    plots.tilt_history(out, run.state["energy"], points, tilt)
     plots.monitoring(out, points, points.labels[::2], normal_dydx=TABLE_NORMAL_DYDX)

@@ -2,7 +2,7 @@
 from __future__ import annotations
 
 import math
-from typing import Any, Sequence
+from typing import Any, Optional, Sequence
 
 from yade import O
 
@@ -37,14 +37,14 @@ class MonitoringPoints:
         return [dy / dx if dx != 0 and (dx * dx + dy * dy) ** 0.5 >= still else math.nan
                 for dx, dy in zip(self.x[label], self.y[label])]
 
-    def rate_since(self, label: str, since: float) -> float:
+    def rate_since(self, label: str, since: float, until: Optional[float] = None) -> float:
         """How fast [m/s] the point's total displacement changed from the record nearest the
-        simulated time ``since`` to the last record (0 with no time between): a column still
-        toppling keeps moving, one that only rattles does not."""
-        start = min(range(len(self.time)), key=lambda i: abs(self.time[i] - since))
-        span = self.time[-1] - self.time[start]
+        simulated time ``since`` to the one nearest ``until`` (the last record by default; 0 with
+        no time between): a column still toppling keeps moving, one that only rattles does not."""
+        start, end = (min(range(len(self.time)), key=lambda i: abs(self.time[i] - t)) for t in (since, until or self.time[-1]))
+        span = self.time[end] - self.time[start]
         total = self.total(label)
-        return abs(total[-1] - total[start]) / span if span > 0 else 0.0
+        return abs(total[end] - total[start]) / span if span > 0 else 0.0
 
     def as_dict(self) -> dict[str, Any]:
         return {"labels": self.labels, "ids": self.ids, "reference": self.reference, "time": self.time,

@@ -218,17 +218,22 @@ class TiltRun:
         return tilting.run_stage(alpha, self.watched, np.array(phase["reference"]), self.criteria, self.on_chunk,
                                  start=phase["start"])
 
-    def analyse(self, tilt: float) -> dict:
+    def analyse(self, tilt: float, onset: Optional[dict] = None) -> dict:
         """The failure of the last stage (at ``tilt``), from the displacements since the last
         equilibrium and every crack so far, in the slope frame (x normal to the columns towards
-        the face, y up the columns)."""
-        reference, now = np.array(self.state["reference"]), tilting.positions(self.ids)
+        the face, y up the columns); with ``onset`` (the state's) at the failing stage's end: its
+        positions, its cracks, and the tops that moved in its last chunk."""
+        reference = np.array(self.state["reference"])
+        failed_at = self.state["stages"][-1]["time"]
+        if onset is None:  # a top still moving since the failure
+            now, breaks, since, until = tilting.positions(self.ids), None, failed_at, None
+        else:
+            now, breaks, since, until = np.array(onset["positions"]), onset["breaks"], failed_at - self.criteria.chunk, failed_at
         index = {i: n for n, i in enumerate(self.ids)}
-        failed_at = self.state["stages"][-1]["time"]  # a top still moving since the failure
         result = failure.table_failure(
             self.layout, reference, now, {label: index[i] for label, i in zip(self.points.labels, self.points.ids)},
-            lambda label: self.points.rate_since(label, failed_at) > self.criteria.rest_speed,
-            [tuple(p)[:2] for p in engines.bond_law().breakPosition], tilt, floor=self.off_table,
+            lambda label: self.points.rate_since(label, since, until) > self.criteria.rest_speed,
+            [tuple(p)[:2] for p in engines.bond_law().breakPosition][:breaks], tilt, floor=self.off_table,
             band=2 * self.rmax, least_motion=self.rmin)  # the model's resolution
         return {**result, "disp": now - reference, "now": now}
 
@@ -277,6 +282,7 @@ class TiltRun:
                  "gone": [c for c, gone in zip(self.watched_columns, off) if gone]}
         if outcome == "failed":  # a collapse or a creep: whoever weighs the failure tilt needs to know which
             stage["failed_by"] = "fail_displacement" if self.criteria.collapsed(off) else "max_stage_time"
+            state["onset"] = {"positions": tilting.positions(self.ids).tolist(), "breaks": engines.broken_bonds()}
         state["stages"].append(stage)
         print(stage_line(stage), flush=True)
         if outcome == "equilibrium":
