@@ -2,7 +2,7 @@
 #include "geometry/JointSet.hpp"
 #include <gtest/gtest.h>
 
-using namespace toppling::geometry;
+using namespace yade::toppling::geometry;
 
 namespace {
 Polygon square(double size) { return Polygon({ { 0, 0 }, { size, 0 }, { size, size }, { 0, size } }); }

@@ -46,15 +46,18 @@ def test_joint_set_geometry_and_bad_spacing():
         JointSetGeometry(spacing=-1.0)
 
 
-def test_block_and_layer_of_a_point():
+def test_the_band_of_a_point_tells_layers_and_blocks_apart():
     columns = JointSetGeometry(origin=(0, 0), dip=80, spacing=0.1)  # main joints, dipping 80 deg
     bedding = JointSetGeometry(origin=(0, 0), dip=0, spacing=0.3)  # layers 0.3 m thick
-    assert geometry.layer_of((0.0, 0.1), bedding) != geometry.layer_of((0.0, 0.4), bedding)
-    assert geometry.layer_of((0.0, 0.1), bedding) == geometry.layer_of((5.0, 0.2), bedding)
-    a, b = geometry.block_of((0.05, 0.1), [columns, bedding]), geometry.block_of((0.06, 0.12), [columns, bedding])
-    assert a == b
-    assert geometry.block_of((0.2, 0.1), [columns, bedding]) != a  # across a main joint
-    assert geometry.block_of((0.05, 0.35), [columns, bedding]) != a  # across a bedding plane
+    assert bedding.band((0.0, 0.1)) != bedding.band((0.0, 0.4))
+    assert bedding.band((0.0, 0.1)) == bedding.band((5.0, 0.2))
+
+    def block(p):
+        return columns.band(p), bedding.band(p)
+
+    assert block((0.05, 0.1)) == block((0.06, 0.12))
+    assert block((0.2, 0.1)) != block((0.05, 0.1))  # across a main joint
+    assert block((0.05, 0.35)) != block((0.05, 0.1))  # across a bedding plane
 
 
 def test_packer_is_reproducible_and_meets_its_targets(empty_scene):

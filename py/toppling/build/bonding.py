@@ -84,22 +84,6 @@ def _intact_now(body_id: int) -> int:
     return intact_bonds(body_id) if O.bodies[body_id] is not None else 0
 
 
-def bonds_before_breaks() -> list[tuple[int, int]]:
-    """For each break the parallel-bond law has recorded, in order, the intact bonds its two
-    discs had just before it: each disc's intact bonds now plus its breaks from that one on."""
-    law = bond_law()
-    now = {}
-    later = defaultdict(int)
-    before = []
-    for pair in reversed(list(zip(law.breakId1, law.breakId2))):
-        for i in pair:
-            if i not in now:
-                now[i] = _intact_now(i)
-            later[i] += 1
-        before.append(tuple(now[i] + later[i] for i in pair))
-    return before[::-1]
-
-
 def rock_breaks(first: int, count: int) -> list[int]:
     """The indices of the ``count`` recorded breaks from the ``first`` on that cracked the rock:
     both discs still rock (``rock``: held by at least two intact bonds) once the last of them is

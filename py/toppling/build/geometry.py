@@ -5,7 +5,7 @@ from __future__ import annotations
 from typing import Sequence
 
 from yade import pack
-from yade.wrapper import JointSetGeometry, PolygonRegion
+from yade.wrapper import PolygonRegion
 
 Point = Sequence[float]
 
@@ -15,17 +15,6 @@ def region(vertices: Sequence[Point], holes: Sequence[Sequence[Point]] = ()) -> 
     return PolygonRegion(vertices=[tuple(v) for v in vertices],
                          holeVertices=[tuple(v) for h in holes for v in h],
                          holeSizes=[len(h) for h in holes])
-
-
-def block_of(point: Point, persistent_sets: Sequence[JointSetGeometry]) -> tuple[int, ...]:
-    """The block (region between joints) holding a point: its band in each fully persistent
-    joint set; two points are in the same block when these tuples are equal."""
-    return tuple(s.band((point[0], point[1])) for s in persistent_sets)
-
-
-def layer_of(point: Point, bedding: JointSetGeometry) -> int:
-    """The layer (band between two bedding planes of the set ``bedding``) holding a point."""
-    return bedding.band((point[0], point[1]))
 
 
 class PolygonPredicate(pack.Predicate):
