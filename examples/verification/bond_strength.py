@@ -7,8 +7,7 @@ bond load is compared with the criteria (Potyondy & Cundall 2004):
     bend:   M = sigma_c I / R_bar              (tension)
     shear:  F = (c + sigma tan phi_bar) A      (shear; sigma = 0, or `compression` first)
 
-    ./yade -x -n examples/verification/bond_strength.py            # load=pull
-    YADE_BATCH=... or edit: load in {pull, bend, shear}, compression [Pa]
+    ./yade -x -n examples/verification/bond_strength.py     # load=pull; or bend, shear, compression [Pa]
 """
 import math
 
@@ -66,19 +65,15 @@ if not law.breakMode:
     raise RuntimeError("the bond did not break")
 
 sigma_at_break = history[-1][0] / A
-if table.load == "pull":
-    measured = max(-fn for fn, _, _ in history)
-elif table.load == "bend":
-    measured = max(abs(m) for _, _, m in history)
-else:
-    measured = max(fs for _, fs, _ in history)
+column = {"pull": 0, "shear": 1, "bend": 2}[table.load]  # tension, shear force, moment
+measured = max(abs(h[column]) for h in history)
+if table.load == "shear":
     reference, unit = (table.cohesion + sigma_at_break * math.tan(mat.bondFrictionAngle)) * A, "N"
 
 result, mode = output.comparison(measured, reference, unit), engines.BREAK_MODES[law.breakMode[0]]
 output.write_summary(table.out, output.table_inputs(table), **result, mode=mode,
                      sigma_at_break=sigma_at_break, released_energy=law.breakEnergy[0])
 fig, ax = output.figure("step", "bond load / predicted strength", f"Bond strength: {table.load}")
-column = {"pull": 0, "shear": 1, "bend": 2}[table.load]
 ax.plot([abs(h[column]) / reference for h in history])
 output.save_figure(fig, table.out, "load")
 print(f"{table.load}: peak {measured:.6g} {unit} (criterion {reference:.6g}, rel. error {result['rel_error']:.2e}), "
