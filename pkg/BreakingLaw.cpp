@@ -7,12 +7,14 @@ namespace yade {
 YADE_PLUGIN((BreakingLaw));
 CREATE_LOGGER(BreakingLaw);
 
-void BreakingLaw::recordBreak(const Interaction& I, const Vector3r& where, int mode, Real energy)
+void BreakingLaw::recordBreak(const Interaction& I, const Vector3r& where, const Vector3r& normal, Real size, int mode, Real energy)
 {
 #pragma omp critical(toppling_bond_breaks)
 	{
 		breakTime.push_back(scene->time);
 		breakPosition.push_back(where);
+		breakNormal.push_back(normal);
+		breakSize.push_back(size);
 		breakMode.push_back(mode);
 		breakEnergy.push_back(energy);
 		breakId1.push_back(I.getId1());

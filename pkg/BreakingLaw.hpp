@@ -11,7 +11,8 @@ namespace yade {
 class BreakingLaw : public LawFunctor {
 public:
 	enum Mode { tension = 2, shear = 3 };
-	void recordBreak(const Interaction& I, const Vector3r& where, int mode, Real energy);
+	// Records a break at `where`, across the unit `normal` (the bond's axis), of a bond `size` wide.
+	void recordBreak(const Interaction& I, const Vector3r& where, const Vector3r& normal, Real size, int mode, Real energy);
 	void reportInstability(const Interaction& I);
 	// Applies the physics' force on body 2 (normalForce + shearForce, minus it on body 1) at the
 	// contact point and a couple about z on body 2; a non-finite force stops the run instead.
@@ -19,10 +20,12 @@ public:
 	applyForces(const Interaction& I, const Vector3r& pos1, const Vector3r& pos2, const Vector3r& contactPoint, const NormShearPhys& phys, Real couple);
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS(BreakingLaw, LawFunctor,
-		"Base of the toppling laws: keeps one record per broken bond (time, position, mode, released energy, "
-		"bodies) and stops the run when it goes unstable.",
+		"Base of the toppling laws: keeps one record per broken bond (time, position, normal, size, mode, released "
+		"energy, bodies) and stops the run when it goes unstable.",
 		((vector<Real>, breakTime, , , "Simulated time of each bond break [s]."))
 		((vector<Vector3r>, breakPosition, , , "Bond centre at each break [m]."))
+		((vector<Vector3r>, breakNormal, , , "Unit normal of each broken bond (its axis, body 1 to body 2; a joint's normal) at the break [-]."))
+		((vector<Real>, breakSize, , , "Width of each broken bond across its axis, the crack's length in the plane [m]."))
 		((vector<int>, breakMode, , , "Mode of each break: 2 tension, 3 shear."))
 		((vector<Real>, breakEnergy, , , "Elastic energy released by each break [J]."))
 		((vector<int>, breakId1, , , "First body of each broken bond."))

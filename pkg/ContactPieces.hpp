@@ -60,6 +60,21 @@ namespace toppling {
 		return true;
 	}
 
+	// Coulomb slider with dilation in a joint's own frame (normal force fn = knA * overlap,
+	// compression positive; scalar shear force fs): beyond the limit tanPhi * fn the shear force
+	// returns to it, and the plastic slip (|fs| - limit) / ksA closes the joint by slip * tanPsi
+	// (dilation against the confinement), raising fn. Returns the plastic slip (0 while sticking).
+	inline Real dilatantSlip(Real& fn, Real& fs, Real& overlap, Real knA, Real ksA, Real tanPhi, Real tanPsi)
+	{
+		const Real limit = tanPhi * fn;
+		if (math::abs(fs) <= limit) return 0;
+		const Real slip = (math::abs(fs) - limit) / ksA;
+		overlap += slip * tanPsi;
+		fn = knA * overlap;
+		fs = (fs < 0 ? -1 : 1) * tanPhi * fn;
+		return slip;
+	}
+
 	// Applies force f on body 1 (-f on body 2) at the contact point and a couple m on body 2 (-m on
 	// body 1), with one addForce and one addTorque per body: every call writes a flag shared by
 	// all threads in YADE's ForceContainer, so fewer calls scale better.

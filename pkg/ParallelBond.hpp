@@ -1,9 +1,10 @@
 // Parallel-bond model for discs (Potyondy & Cundall 2004, PFC2D form): a linear frictional
-// contact in parallel with an elastic-brittle bond that carries force and moment.
+// contact in parallel with an elastic-brittle bond that carries force and moment. Material,
+// physics and the Ip2 that decides rock or joint; the law is ParallelBondLaw.hpp.
 #pragma once
 
 #include "BreakingLaw.hpp"
-#include "SmoothJoint.hpp"
+#include "JointSystem.hpp"
 #include <lib/base/AliasNamespaces.hpp>
 #include <core/Dispatching.hpp>
 #include <pkg/common/ElastMat.hpp>
@@ -29,7 +30,7 @@ public:
 		"Two materials: disc stiffnesses in series, stiffness ratios averaged, bond modulus, strengths, thickness "
 		"and friction angles the smaller value, damping ratios the larger.",
 		((Real, knKs, 1, Attr::triggerPostLoad, "Contact normal-to-shear stiffness ratio $k_n/k_s$ [-] (> 0)."))
-		((Real, thickness, 1, Attr::triggerPostLoad, "Disc thickness $t$ [m] (> 0); also sets disc mass $\\rho\\pi R^2t$ when discs are made by ``toppling.scene.disc``."))
+		((Real, thickness, 1, Attr::triggerPostLoad, "Disc thickness $t$ [m] (> 0); also sets disc mass $\\rho\\pi R^2t$ when discs are made by ``toppling.build.discs.disc``."))
 		((Real, normalDamping, 0, Attr::triggerPostLoad, "Contact normal critical damping ratio $\\beta_n$ [-], in [0,1)."))
 		((Real, bondRadiusMultiplier, 1, Attr::triggerPostLoad, "Bond radius multiplier $\\bar\\lambda$ [-] (> 0)."))
 		((Real, bondYoung, 1e9, Attr::triggerPostLoad, "Bond modulus $\\bar E_c$ [Pa] (>= 0)."))
@@ -112,52 +113,10 @@ private:
 		"Where :yref:`joints<Ip2_ParallelBondMat_ParallelBondMat_ParallelBondPhys.joints>` says the two discs straddle "
 		"a joint, it creates that joint set's :yref:`SmoothJointPhys` instead: the one place that decides between "
 		"rock and joint.",
-		((shared_ptr<JointSystem>, joints, , , "The scene's joints (``toppling.joints`` sets it); none: all rock."))
+		((shared_ptr<JointSystem>, joints, , , "The scene's joints (``toppling.build.joints`` sets it); none: all rock."))
 	);
 	// clang-format on
 };
 REGISTER_SERIALIZABLE(Ip2_ParallelBondMat_ParallelBondMat_ParallelBondPhys);
-
-class Law2_ScGeom_ParallelBondPhys_ParallelBond : public BreakingLaw {
-public:
-	bool go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip, Interaction* I) override;
-	Real elasticEnergy() const;
-	int  countBonds(int state) const;
-	Real criticalTimeStep() const;
-	// clang-format off
-	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(Law2_ScGeom_ParallelBondPhys_ParallelBond, BreakingLaw,
-		"Parallel-bond law (Potyondy & Cundall 2004, PFC2D). Contact: $F_n=k_nu_n$ for $u_n>0$, incremental shear "
-		"(from the contact point's relative velocity, rotated with the contact frame), $|F_s|\\le\\mu F_n$. Bond: "
-		"$\\bar F_n=\\bar k^nA(u_n-u_{n,0})$, $\\Delta\\bar F_s=-\\bar k^sA\\Delta u_s$, $\\Delta\\bar M=-\\bar k^nI\\Delta\\theta_z$. "
-		"It breaks in tension when $\\bar\\sigma_{max}=-\\bar F_n/A+|\\bar M|\\bar R/I\\ge\\bar\\sigma_c$, else in shear when "
-		"$|\\bar F_s|/A\\ge\\bar c+\\sigma\\tan\\bar\\phi$ ($\\sigma=\\bar F_n/A$); the contact then goes on as frictional "
-		"and the break is recorded (see :yref:`BreakingLaw`). Dashpots $c\\,v_n$ act while touching (contact) and "
-		"while bonded (bond).",
-		/*attrs*/,
-		/*ctor*/,
-		.def("elasticEnergy", &Law2_ScGeom_ParallelBondPhys_ParallelBond::elasticEnergy,
-			"Elastic energy in all contacts and bonds of this law [J].")
-		.def("criticalTimeStep", &Law2_ScGeom_ParallelBondPhys_ParallelBond::criticalTimeStep,
-			"Critical time step from the stiffness of every contact, bond and smooth joint, loaded or not [s]: "
-			":yref:`GlobalStiffnessTimeStepper`'s estimate (safety 1), which skips interactions carrying no force "
-			"and so misses freshly installed, stress-free bonds. ``toppling.bonding`` uses it after bonding.")
-		.def("countBonds", &Law2_ScGeom_ParallelBondPhys_ParallelBond::countBonds, (boost::python::arg("state") = 1),
-			"Number of interactions whose :yref:`ParallelBondPhys.bondState` equals ``state``.")
-	);
-	// clang-format on
-	FUNCTOR2D(ScGeom, ParallelBondPhys);
-
-private:
-	bool updateBond(const Interaction& I, ScGeom& geom, ParallelBondPhys& phys, const Vector3r& shearIncrement, Real relativeSpin);
-};
-REGISTER_SERIALIZABLE(Law2_ScGeom_ParallelBondPhys_ParallelBond);
-
-namespace toppling {
-	// The rock's rotation at a disc [rad]: the mean turn of its intact bonds since they were
-	// installed. Unlike the disc's own spin, this is defined by its neighbours, so a loose disc
-	// spinning in a pore does not count. False with fewer than two intact bonds: a disc hanging
-	// on one bond swings about its neighbour and would tilt its joint contacts.
-	bool meanBondTurn(const Body& body, const Scene& scene, Real& turn);
-} // namespace toppling
 
 } // namespace yade

@@ -5,9 +5,9 @@ namespace yade {
 YADE_PLUGIN((PolygonRegion)(JointSetGeometry));
 
 namespace toppling {
-	::toppling::geometry::Box box(const Vector2r& lo, const Vector2r& hi)
+	toppling::geometry::Box box(const Vector2r& lo, const Vector2r& hi)
 	{
-		::toppling::geometry::Box b;
+		toppling::geometry::Box b;
 		b.extend(xy(lo));
 		b.extend(xy(hi));
 		return b;
@@ -15,13 +15,13 @@ namespace toppling {
 } // namespace toppling
 
 namespace {
-	::toppling::geometry::Polygon polygon(const vector<Vector2r>& vertices, const char* what)
+	toppling::geometry::Polygon polygon(const vector<Vector2r>& vertices, const char* what)
 	{
-		std::vector<::toppling::geometry::Vec2> v;
+		std::vector<toppling::geometry::Vec2> v;
 		for (const auto& p : vertices)
 			v.push_back(toppling::xy(p));
 		try {
-			return ::toppling::geometry::Polygon(std::move(v));
+			return toppling::geometry::Polygon(std::move(v));
 		} catch (const std::invalid_argument& e) {
 			throw std::invalid_argument(std::string("PolygonRegion.") + what + ": " + e.what());
 		}
@@ -30,10 +30,10 @@ namespace {
 
 /********************** PolygonRegion **********************/
 
-::toppling::geometry::Region PolygonRegion::toGeometry() const
+toppling::geometry::Region PolygonRegion::toGeometry() const
 {
-	std::vector<::toppling::geometry::Polygon> holes;
-	size_t                                     start = 0;
+	std::vector<toppling::geometry::Polygon> holes;
+	size_t                                   start = 0;
 	for (int n : holeSizes) {
 		if (n < 0 || start + n > holeVertices.size())
 			throw std::invalid_argument(
@@ -41,7 +41,7 @@ namespace {
 		holes.push_back(polygon(vector<Vector2r>(holeVertices.begin() + start, holeVertices.begin() + start + n), "holeVertices"));
 		start += n;
 	}
-	return ::toppling::geometry::Region(polygon(vertices, "vertices"), std::move(holes));
+	return toppling::geometry::Region(polygon(vertices, "vertices"), std::move(holes));
 }
 
 boost::python::list PolygonRegion::containsMany(const boost::python::list& points, Real pad) const
@@ -61,9 +61,9 @@ boost::python::tuple PolygonRegion::aabb() const
 
 /********************** JointSetGeometry **********************/
 
-::toppling::geometry::JointSet JointSetGeometry::toGeometry() const
+toppling::geometry::JointSet JointSetGeometry::toGeometry() const
 {
-	::toppling::geometry::JointSet g;
+	toppling::geometry::JointSet g;
 	g.origin       = { double(origin.x()), double(origin.y()) };
 	g.dipDeg       = double(dip);
 	g.spacing      = double(spacing);

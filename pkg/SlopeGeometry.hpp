@@ -10,27 +10,27 @@
 namespace yade {
 
 namespace toppling {
-	inline ::toppling::geometry::Vec2 xy(const Vector2r& p) { return { double(p.x()), double(p.y()) }; }
-	inline ::toppling::geometry::Vec2 xy(const Vector3r& p) { return { double(p.x()), double(p.y()) }; }
-	::toppling::geometry::Box         box(const Vector2r& lo, const Vector2r& hi);
+	inline toppling::geometry::Vec2 xy(const Vector2r& p) { return { double(p.x()), double(p.y()) }; }
+	inline toppling::geometry::Vec2 xy(const Vector3r& p) { return { double(p.x()), double(p.y()) }; }
+	toppling::geometry::Box         box(const Vector2r& lo, const Vector2r& hi);
 } // namespace toppling
 
 // A cross-section: a simple polygon (possibly non-convex) minus holes.
 class PolygonRegion : public Serializable {
 public:
-	::toppling::geometry::Region toGeometry() const;
-	bool                         contains(const Vector2r& p, Real pad) const { return toGeometry().contains(toppling::xy(p), double(pad)); }
-	boost::python::list          containsMany(const boost::python::list& points, Real pad) const;
-	Real                         area() const { return toGeometry().area(); }
-	boost::python::tuple         aabb() const;
-	void                         postLoad(PolygonRegion&)
+	toppling::geometry::Region toGeometry() const;
+	bool                       contains(const Vector2r& p, Real pad) const { return toGeometry().contains(toppling::xy(p), double(pad)); }
+	boost::python::list        containsMany(const boost::python::list& points, Real pad) const;
+	Real                       area() const { return toGeometry().area(); }
+	boost::python::tuple       aabb() const;
+	void                       postLoad(PolygonRegion&)
 	{
 		if (!vertices.empty()) toGeometry(); // empty: not defined yet (default-constructed)
 	}
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(PolygonRegion, Serializable,
 		"A slope cross-section in the xy-plane: a simple polygon, possibly non-convex, minus holes. Bad input "
-		"(fewer than 3 vertices, repeated vertices, self-intersection) raises ValueError. ``toppling.geometry`` "
+		"(fewer than 3 vertices, repeated vertices, self-intersection) raises ValueError. ``toppling.build.geometry`` "
 		"wraps it as a YADE ``pack`` predicate.",
 		((vector<Vector2r>, vertices, , Attr::triggerPostLoad, "Outer boundary [m], either orientation."))
 		((vector<Vector2r>, holeVertices, , Attr::triggerPostLoad, "Vertices of all holes, one after another [m]."))
@@ -49,13 +49,13 @@ public:
 REGISTER_SERIALIZABLE(PolygonRegion);
 
 // Geometry of one joint set (exposed to Python): parallel joints at a spacing, with rock
-// bridges, or explicit segments. Wraps ::toppling::geometry::JointSet.
+// bridges, or explicit segments. Wraps toppling::geometry::JointSet.
 class JointSetGeometry : public Serializable {
 public:
-	::toppling::geometry::JointSet toGeometry() const;
-	boost::python::list            segmentsPy(const Vector2r& lo, const Vector2r& hi) const;
-	long                           band(const Vector2r& p) const { return toGeometry().band({ p.x(), p.y() }); }
-	void                           postLoad(JointSetGeometry&) { toGeometry().validate(); }
+	toppling::geometry::JointSet toGeometry() const;
+	boost::python::list          segmentsPy(const Vector2r& lo, const Vector2r& hi) const;
+	long                         band(const Vector2r& p) const { return toGeometry().band({ p.x(), p.y() }); }
+	void                         postLoad(JointSetGeometry&) { toGeometry().validate(); }
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(JointSetGeometry, Serializable,
 		"Where the joints of one set are, in the xy cross-section.",

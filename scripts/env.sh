@@ -5,4 +5,7 @@ _toppling_cache=${TOPPLING_CACHE:-${XDG_CACHE_HOME:-$HOME/.cache}/toppling}
 export TOPPLING_REPO="$_toppling_repo"
 export PYTHONPATH="$_toppling_repo/py:$_toppling_repo:$_toppling_cache/yade/lib/x86_64-linux-gnu/yade/py${PYTHONPATH:+:$PYTHONPATH}"
 export PATH="/usr/bin:$PATH"
+# ParaView's own Python modules, for pvbatch only (scripts/setup.sh unpacks them):
+#   PYTHONPATH=$TOPPLING_PARAVIEW_PYTHON xvfb-run -a pvbatch py/pvbatch/render_series.py <run>/paraview out.png
+export TOPPLING_PARAVIEW_PYTHON="$_toppling_cache/paraview/usr/lib/python3/dist-packages"
 unset _toppling_repo _toppling_cache

@@ -18,6 +18,15 @@ if [ ${#missing[@]} -gt 0 ]; then
   DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"
 fi
 
+# Debian's python3-paraview conflicts with python3-vtk9, which YADE's VTK export and ours need:
+# unpacked into the cache instead, for pvbatch alone (scripts/env.sh: TOPPLING_PARAVIEW_PYTHON).
+paraview_python="${TOPPLING_CACHE:-${XDG_CACHE_HOME:-$HOME/.cache}/toppling}/paraview"
+if [ ! -d "$paraview_python/usr/lib/python3/dist-packages/paraview" ]; then
+  download=$(mktemp -d)
+  (cd "$download" && apt-get download -q python3-paraview && dpkg-deb -x python3-paraview_*.deb "$paraview_python")
+  rm -rf "$download"
+fi
+
 # Debian's python first: YADE's cmake must not see a pyenv interpreter.
 export PATH="/usr/bin:$PATH"
 cmake -S "$repo" -B "$repo/build" -DCMAKE_BUILD_TYPE=Release "$@"

@@ -18,7 +18,7 @@ import importlib
 
 _API = {
     "disc": "build.discs", "add_discs": "build.discs", "engines": "build.engines", "broken_bonds": "build.engines",
-    "pack_polygon": "build.packing", "pack_predicate": "build.packing", "region": "build.geometry", "bond_within_gap": "build.bonding",
+    "pack_polygon": "build.packing", "pack_predicate": "build.packing", "shrink_overlaps": "build.packing", "region": "build.geometry", "bond_within_gap": "build.bonding",
     "install_joints": "build.joints", "fix": "build.boundary", "near": "build.boundary",
     "ColumnLayout": "build.columns", "set_tilt": "load.tilting", "run_steps": "run.steps",
     "run_checked": "run.steps", "Checkpoint": "run.checkpoint", "Progress": "run.progress",

@@ -15,7 +15,7 @@ from toppling.build import bonding, engines, joints
 from toppling.build.discs import disc
 from toppling.io import paraview
 
-RENDER = os.path.join(REPO, "py", "toppling", "io", "render_series.py")
+RENDER = os.path.join(REPO, "py", "pvbatch", "render_series.py")
 
 
 def test_the_series_renders_to_a_picture_that_is_not_blank(empty_scene, tmp_path):
@@ -30,8 +30,9 @@ def test_the_series_renders_to_a_picture_that_is_not_blank(empty_scene, tmp_path
     pull_until_broken(1)
     series.snapshot()
     png = tmp_path / "picture.png"
+    paraview_python = dict(os.environ, PYTHONPATH=os.environ["TOPPLING_PARAVIEW_PYTHON"])  # scripts/env.sh
     proc = subprocess.run(["xvfb-run", "-a", "pvbatch", RENDER, str(tmp_path / "paraview"), str(png)],
-                          capture_output=True, text=True, timeout=300)
+                          capture_output=True, text=True, timeout=300, env=paraview_python)
     assert proc.returncode == 0 and png.exists(), proc.stdout[-2000:] + proc.stderr[-2000:]
     pixels = matplotlib.image.imread(str(png))[..., :3]
     drawn = np.any(pixels < 0.95, axis=-1)  # anything but the white background

@@ -18,5 +18,6 @@ def test_the_readme_example_builds_runs_and_reads_a_jointed_slope(tmp_path):
                           text=True, timeout=300, cwd=tmp_path)
     assert proc.returncode == 0, proc.stdout[-2000:] + proc.stderr[-2000:]
     moved, broken = re.search(r"crest moved ([\d.]+) mm, (\d+) bonds broken", proc.stdout).groups()
-    # tilted 30 deg for 0.05 s, the crest starts to slump: it moves, by less than one disc
-    assert 0 < float(moved) < 6.0 and int(broken) >= 0
+    # tilted 30 deg for 0.05 s the slope deforms under its weight and stands: the crest moves, by less than the
+    # smallest disc's radius (a collapse, or bonds broken by locked-in overlap, would move it by centimetres)
+    assert 0 < float(moved) < 3.0 and int(broken) >= 0

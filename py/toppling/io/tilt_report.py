@@ -86,7 +86,7 @@ def view(run: TiltRun) -> tuple[float, float, float, float]:
 def plot_model(run: TiltRun, out: str, name: str) -> None:
     """``slope_before.png``: the model at its last equilibrium: joints by set, the fixed discs,
     and how far the discs had moved there since the model was built."""
-    built = run.series.reference[[run.series.index[i] for i in run.ids]][:, :2]
+    built = np.array(run.state["built"])
     at_rest = np.array(run.state["reference"])
     stood = [s["tilt"] for s in run.state["stages"] if s["outcome"] == "equilibrium"]
     when = f"{stood[-1]:.0f} deg" if stood else "the level table"

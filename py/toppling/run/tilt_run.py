@@ -71,7 +71,8 @@ def fresh_state(inputs: dict[str, Any], layout: columns.ColumnLayout, ids: list[
                 start_tilt: float) -> dict[str, Any]:
     """The checkpointed state of a run starting on a built scene: its discs ``ids`` and the
     groups it watches, ``bands`` (discs near each column's top, by column label)."""
-    return {"inputs": inputs, "layout": vars(layout), "ids": ids, "watched": list(bands.values()),
+    return {"inputs": inputs, "layout": vars(layout), "ids": ids, "built": tilting.positions(ids).tolist(),
+            "watched": list(bands.values()),
             "watched_columns": list(bands), "tilt": start_tilt, "failure_tilt": None,
             "reference": tilting.positions(ids).tolist(), "stages": [], "energy": []}
 

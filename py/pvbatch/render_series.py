@@ -2,7 +2,8 @@
 discs as circles coloured by displacement, intact bonds grey, cracks red (tension) and blue
 (shear), joints by set. A pvbatch script (ParaView's Python), not a module of the package:
 
-    xvfb-run -a pvbatch py/toppling/io/render_series.py results/tilting_table/demo/paraview picture.png
+    source scripts/env.sh
+    PYTHONPATH=$TOPPLING_PARAVIEW_PYTHON xvfb-run -a pvbatch py/pvbatch/render_series.py results/tilting_table/demo/paraview picture.png
 """
 import os
 import sys
@@ -31,7 +32,7 @@ def show_lines(folder: str, kind: str, view, colour=None, by=None, width=1.0):
     if by:
         pv.ColorBy(display, ("CELLS", by))
     else:
-        pv.ColorBy(display, None)
+        display.ColorArrayName = ["POINTS", ""]  # one colour
         display.AmbientColor = display.DiffuseColor = colour
     return display
 

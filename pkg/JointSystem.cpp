@@ -1,0 +1,140 @@
+#include "JointSystem.hpp"
+#include "ParallelBond.hpp"
+#include "SmoothJoint.hpp"
+#include <core/Omega.hpp>
+#include <core/Scene.hpp>
+#include <pkg/common/Sphere.hpp>
+
+namespace yade {
+
+YADE_PLUGIN((JointSystem));
+
+boost::python::list JointSystem::crossingPairs(const JointSetGeometry& set, const Vector2r& lo, const Vector2r& hi) const
+{
+	const std::vector<std::vector<toppling::geometry::Segment>> joints { set.toGeometry().segments(toppling::box(lo, hi)) };
+	const Scene&                                                sc = *Omega::instance().getScene();
+	boost::python::list                                         out;
+	for (const auto& I : *sc.interactions) {
+		if (!I->isReal()) continue;
+		const Vector3r& p = (*sc.bodies)[I->getId1()]->state->pos;
+		const Vector3r& q = (*sc.bodies)[I->getId2()]->state->pos;
+		if (toppling::geometry::crossedSet(joints, toppling::xy(p), toppling::xy(q)) >= 0)
+			out.append(boost::python::make_tuple(I->getId1(), I->getId2()));
+	}
+	return out;
+}
+
+void JointSystem::assignBlocks(const boost::python::list& persistentSets)
+{
+	std::vector<toppling::geometry::JointSet> sets;
+	for (int i = 0; i < boost::python::len(persistentSets); ++i)
+		sets.push_back(boost::python::extract<const JointSetGeometry&>(persistentSets[i])().toGeometry());
+	toppling::geometry::BlockIndex blocks(sets);
+	const Scene&                   sc = *Omega::instance().getScene();
+	blockOfBody.assign(sc.bodies->size(), -1);
+	for (const auto& b : *sc.bodies)
+		if (b && dynamic_cast<const Sphere*>(b->shape.get())) blockOfBody[b->id] = blocks.blockId(toppling::xy(b->state->pos));
+}
+
+
+void JointSystem::addPair(Body::id_t id1, Body::id_t id2, int set)
+{
+	pairId1.push_back(id1);
+	pairId2.push_back(id2);
+	pairSet.push_back(set);
+	index[key(id1, id2)] = set;
+}
+
+void JointSystem::rebuildIndex()
+{
+	// The three lists may differ in length for a moment while Python assigns them one by one.
+	index.clear();
+	for (size_t i = 0; i < std::min({ pairId1.size(), pairId2.size(), pairSet.size() }); ++i)
+		index[key(pairId1[i], pairId2[i])] = pairSet[i];
+}
+
+int JointSystem::listedSet(Body::id_t id1, Body::id_t id2) const
+{
+	const auto it = index.find(key(id1, id2));
+	return it == index.end() ? -1 : it->second;
+}
+
+int JointSystem::setFor(Body::id_t id1, Body::id_t id2, const Vector3r& branch, Real rockTurn, const Scene& sc) const
+{
+	if (const int listed = listedSet(id1, id2); listed >= 0) return listed;
+	if (!differentBlocks(id1, id2)) return -1;
+	// Two blocks that were not in contact when the joints were installed: the set whose
+	// (rotated) joint plane is most nearly perpendicular to the centre line.
+	int  best          = -1;
+	Real bestAlignment = -1;
+	for (size_t s = 0; s < jointMaterials.size(); ++s) {
+		const auto* mat = dynamic_cast<const SmoothJointMat*>(sc.materials[jointMaterials[s]].get());
+		if (!mat) continue;
+		const Real alignment = math::abs(toppling::rotatedZ(mat->normal, rockTurn).dot(branch.normalized()));
+		if (alignment > bestAlignment) {
+			bestAlignment = alignment;
+			best          = int(s);
+		}
+	}
+	return best;
+}
+
+shared_ptr<IPhys> JointSystem::jointPhys(const Interaction& interaction, const Scene& sc) const
+{
+	const Body::id_t id1 = interaction.getId1(), id2 = interaction.getId2();
+	if (!straddles(id1, id2)) return nullptr; // rock: skip the bond scan below
+	const Body&    b1     = *(*sc.bodies)[id1];
+	const Body&    b2     = *(*sc.bodies)[id2];
+	const Vector3r branch = b2.state->pos - b1.state->pos;
+	Real           turn   = 0; // discs without intact bonds: the joint as installed
+	toppling::pairTurn(b1, b2, sc, turn);
+	const int set = setFor(id1, id2, branch, turn, sc);
+	if (set < 0) return nullptr;
+	const auto* mat  = dynamic_cast<const SmoothJointMat*>(sc.materials[jointMaterials[set]].get());
+	const auto* geom = dynamic_cast<const ScGeom*>(interaction.geom.get());
+	if (!mat || !geom) return nullptr;
+	return toppling::makeSmoothJoint(*mat, set, *geom, branch, turn);
+}
+
+/********************** the rock's rotation **********************/
+
+namespace toppling {
+	bool meanBondTurn(const Body& body, const Scene& scene, Real& turn)
+	{
+		Real sum   = 0;
+		int  bonds = 0;
+		for (const auto& idAndInteraction : body.intrs) {
+			const Interaction& I = *idAndInteraction.second;
+			// A class-index test, not a dynamic_cast: this runs for every bond of both discs of
+			// every joint contact at every re-turn, where dynamic_cast took a third of the step.
+			if (!I.phys || I.phys->getClassIndex() != ParallelBondPhys::getClassIndexStatic()) continue;
+			const auto* bond = static_cast<const ParallelBondPhys*>(I.phys.get());
+			if (!bond->isBonded()) continue;
+			const Vector3r  d  = (*scene.bodies)[I.getId2()]->state->pos - (*scene.bodies)[I.getId1()]->state->pos;
+			const Vector3r& d0 = bond->bondDirection0;
+			sum += math::atan2(d0.x() * d.y() - d0.y() * d.x(), d0.dot(d));
+			++bonds;
+		}
+		if (bonds < 2) return false;
+		turn = sum / bonds;
+		return true;
+	}
+
+	bool pairTurn(const Body& b1, const Body& b2, const Scene& scene, Real& turn)
+	{
+		Real       a = 0, b = 0;
+		const bool has1 = meanBondTurn(b1, scene, a), has2 = meanBondTurn(b2, scene, b);
+		if (has1 && has2) turn = a + 0.5 * math::atan2(math::sin(b - a), math::cos(b - a)); // halfway along the shorter arc
+		else if (has1 || has2)
+			turn = has1 ? a : b;
+		return has1 || has2;
+	}
+
+	Vector3r rotatedZ(const Vector3r& v, Real angle)
+	{
+		const Real c = math::cos(angle), s = math::sin(angle);
+		return Vector3r(c * v.x() - s * v.y(), s * v.x() + c * v.y(), 0);
+	}
+} // namespace toppling
+
+} // namespace yade
