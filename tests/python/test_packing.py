@@ -129,3 +129,21 @@ def test_shrink_overlaps_leaves_no_overlap_and_shrinks_by_half_the_largest():
     for k, (disc, after) in enumerate(zip(discs, shrunk)):  # no disc shrinks more than it must
         largest = max([_overlap(disc, other) for m, other in enumerate(discs) if m != k] + [0.0])
         assert disc[2] - after[2] == pytest.approx(0.5 * largest, abs=1e-15)
+
+
+def test_a_combined_yade_predicate_is_packed_with_discs_wholly_inside_it(empty_scene):
+    outline = [(0, 0), (0.1, 0), (0.1, 0.1), (0, 0.1)]
+    tunnel = pack.inCylinder((0.05, 0.05, -1), (0.05, 0.05, 1), 0.03)  # a hole through the plane
+    packed = packing.pack_predicate(geometry.PolygonPredicate(geometry.region(outline)) - tunnel, 0.002, 0.004, 0.18,
+                                    seed=3)
+
+    def inside(x, y, r):  # in the square and clear of the tunnel, by plain geometry
+        return r <= x <= 0.1 - r and r <= y <= 0.1 - r and math.hypot(x - 0.05, y - 0.05) >= 0.03 + r
+
+    box = packing.pack_polygon(geometry.region(outline), 0.002, 0.004, 0.18, seed=3).discs  # the bounding box's
+    assert packed.discs == [d for d in box if inside(*d)] and len(packed.discs) > 0.4 * len(box)
+
+
+def test_an_unbounded_predicate_is_refused_by_name(empty_scene):
+    with pytest.raises(ValueError, match="unbounded"):
+        packing.pack_predicate(pack.notInNotch((0, 0, 0), (1, 0, 0), (0, 1, 0), 0.1), 0.002, 0.004, 0.18)
