@@ -51,7 +51,7 @@ def main(folder: str, png: str) -> None:
     cracks.PointSize = 6
     pv.GetAnimationScene().UpdateAnimationUsingDataTimeSteps()
     times = pv.GetTimeKeeper().TimestepValues  # a single snapshot's time comes as a number
-    pv.GetAnimationScene().AnimationTime = times[-1] if isinstance(times, (list, tuple)) else times
+    pv.GetAnimationScene().AnimationTime = times if isinstance(times, (int, float)) else list(times)[-1]
     view.InteractionMode = "2D"
     view.ResetCamera()
     pv.SaveScreenshot(png, view, ImageResolution=[WIDTH, HEIGHT])

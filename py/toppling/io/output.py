@@ -56,9 +56,9 @@ def save_figure(fig, out: str, name: str) -> str:
     return path
 
 
-def figure(xlabel: str, ylabel: str, title: str = ""):
-    """A new single-axes figure with labels."""
-    fig, ax = plt.subplots(figsize=(6, 4))
+def figure(xlabel: str, ylabel: str, title: str = "", size: tuple[float, float] = (6, 4)):
+    """A new single-axes figure with labels, ``size`` inches."""
+    fig, ax = plt.subplots(figsize=size)
     ax.set_xlabel(xlabel)
     ax.set_ylabel(ylabel)
     if title:

@@ -14,6 +14,7 @@ from toppling.analyse.failure import Plane
 from toppling.run.monitoring import MonitoringPoints
 
 
+SLOPE_SIZE = (9, 5.5)  # [in]: a slope wider than high, its legend below it
 ZONE_COLOURS = {"no-movement": "0.5", "stable": "green", "toppling": "red", "sliding": "blue", "empty": "0.8"}
 SET_COLOURS = ("black", "darkorange", "purple", "teal")
 
@@ -35,6 +36,10 @@ def _discs(ax, fig, centres: np.ndarray, radii: Sequence[float], displacement: n
         ax.text(0.01, 0.95, f"{what}: none", transform=ax.transAxes, fontsize=7)
 
 
+def _legend(ax) -> None:
+    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.12), ncol=3, fontsize=8, frameon=False)
+
+
 def _view(ax, centres: np.ndarray, limits: Optional[tuple[float, float, float, float]]) -> None:
     """``limits`` (xmin, xmax, ymin, ymax, e.g. from around()) fixes the view, so that discs that
     fell off the model do not shrink it to a dot; the figure says how many discs it leaves out."""
@@ -54,7 +59,7 @@ def model(out: str, name: str, centres: np.ndarray, radii: Sequence[float], disp
     """The model a reader must understand: discs at ``centres`` coloured by ``displacement`` (at
     rest, e.g. the last equilibrium), the discs a boundary condition holds (``held``) marked, and
     the joints (((x0, y0), (x1, y1), set) traces, ``toppling.build.joints.joint_traces``) by set."""
-    fig, ax = output.figure("x (m)", "y (m)", title)
+    fig, ax = output.figure("x (m)", "y (m)", title, SLOPE_SIZE)
     _discs(ax, fig, centres, radii, displacement, "displacement")
     held = np.asarray(held, dtype=bool)
     if held.any():
@@ -66,7 +71,7 @@ def model(out: str, name: str, centres: np.ndarray, radii: Sequence[float], disp
         label = set_names[s] if s < len(set_names) else f"joint set {s + 1}"
         ax.plot(xs, ys, "-", color=SET_COLOURS[s % len(SET_COLOURS)], lw=1.2, label=label)
     _view(ax, centres, limits)
-    ax.legend(loc="upper right", fontsize=7)
+    _legend(ax)
     return output.save_figure(fig, out, name)
 
 
@@ -78,7 +83,7 @@ def slope(out: str, name: str, centres: np.ndarray, radii: Sequence[float], disp
     failure planes (given in the slope frame of upright columns: x - toe_x, y), dashed the
     ``overall`` surface through all the failure points where they split into planes, and each
     column's zone ((x, y, zone): written at (x, y), coloured by zone). ``limits`` as in model()."""
-    fig, ax = output.figure("x (m)", "y (m)", title)
+    fig, ax = output.figure("x (m)", "y (m)", title, SLOPE_SIZE)
     _discs(ax, fig, centres, radii, displacement, "displacement")
     cracks, modes = np.asarray(cracks).reshape(-1, 2), np.asarray(modes)
     for mode, marker, colour, label in ((2, "x", "red", "tensile crack"), (3, "+", "blue", "shear crack")):
@@ -92,11 +97,11 @@ def slope(out: str, name: str, centres: np.ndarray, radii: Sequence[float], disp
         ax.plot(toe[0] + x, toe[1] + plane.intercept + plane.slope * x, style, lw=width,
                 label=f"{what}: phi = {plane.phi_deg:.1f} deg")
     for x, y, zone in zones:
-        ax.text(x, y, zone.replace("no-movement", "none"), rotation=90, ha="center", va="bottom", fontsize=6,
+        ax.text(x, y, zone.replace("no-movement", "none"), rotation=90, ha="center", va="bottom", fontsize=7,
                 color=ZONE_COLOURS.get(zone, "k"))
     _view(ax, centres, limits)
     if len(planes) or len(cracks):
-        ax.legend(loc="upper right", fontsize=7)
+        _legend(ax)
     return output.save_figure(fig, out, name)
 
 

@@ -96,9 +96,9 @@ def plot_model(run: TiltRun, out: str, name: str) -> None:
 
 
 def zone_marks(run: TiltRun, zones: list[str]) -> list[tuple[float, float, str]]:
-    """Where each column's zone is written: above its top."""
-    return [(*run.layout.top_centre(k + 1)[:1], run.layout.top_centre(k + 1)[1] + run.rmax, zone)
-            for k, zone in enumerate(zones)]
+    """Where each column's zone is written: in a row above the columns, over its centre."""
+    row = 1.05 * max(run.layout.heights)
+    return [(run.layout.top_centre(k + 1)[0], row, zone) for k, zone in enumerate(zones)]
 
 
 def plot_slope(run: TiltRun, out: str, name: str, result: dict, breaks: int, title: str) -> None:

@@ -29,6 +29,11 @@ from toppling.run.monitoring import MonitoringPoints, column_top_points
 ARRANGEMENTS = ("ideal", "random")
 
 
+def check_arrangement(arrangement: str) -> None:
+    if arrangement not in ARRANGEMENTS:
+        raise ValueError(f"arrangement = {arrangement!r} is invalid: it must be 'ideal' or 'random'")
+
+
 @dataclass
 class Outline:
     """``columns`` columns ``width`` [m] wide whose flat tops meet a profile rising from the toe
@@ -92,8 +97,7 @@ class TiltingTable:
     damping: float = 0.0
 
     def __post_init__(self):
-        if self.arrangement not in ARRANGEMENTS:
-            raise ValueError(f"arrangement = {self.arrangement!r} is invalid: it must be 'ideal' or 'random'")
+        check_arrangement(self.arrangement)
         if self.layout_seed != int(self.layout_seed) or self.layout_seed < 0:
             raise ValueError(f"layout_seed = {self.layout_seed} is invalid: it must be an integer >= 0")
         if not 0 < self.bond_gap <= self.rmax:
@@ -176,8 +180,7 @@ def from_params(p: Any, thesis: Any) -> TiltingTable:
     examples/params.py's TILTING_TABLE_IDEAL) and the thesis' tables ``thesis`` (the module
     examples/params.py: TABLE_5_2, TABLE_5_3, the outline ...). A thesis value given as 0 is
     the table's; calibrated values must lie in the thesis' ranges (CALIBRATION_RANGES)."""
-    if p.arrangement not in ARRANGEMENTS:
-        raise ValueError(f"arrangement = {p.arrangement!r} is invalid: it must be 'ideal' or 'random'")
+    check_arrangement(p.arrangement)
     for name, (lo, hi) in thesis.CALIBRATION_RANGES.items():
         if getattr(p, name) and not lo <= getattr(p, name) <= hi:
             raise ValueError(f"{name} = {getattr(p, name)} is invalid: it must be 0 (the thesis' table) or in "
