@@ -71,14 +71,14 @@ def fresh_state(inputs: dict[str, Any], layout: columns.ColumnLayout, ids: list[
                 start_tilt: float) -> dict[str, Any]:
     """The checkpointed state of a run starting on a built scene: its discs ``ids`` and the
     groups it watches, ``bands`` (discs near each column's top, by column label)."""
-    return {"inputs": inputs, "layout": vars(layout), "ids": ids, "built": tilting.positions(ids).tolist(),
-            "watched": list(bands.values()),
-            "watched_columns": list(bands), "tilt": start_tilt, "failure_tilt": None,
-            "reference": tilting.positions(ids).tolist(), "stages": [], "energy": []}
+    built = tilting.positions(ids).tolist()  # the pictures' reference; "reference" moves with each equilibrium
+    return {"inputs": inputs, "layout": vars(layout), "ids": ids, "built": built, "watched": list(bands.values()),
+            "watched_columns": list(bands), "tilt": start_tilt, "failure_tilt": None, "reference": list(built),
+            "stages": [], "energy": []}
 
 
 def stage_line(stage: dict) -> str:
-    """The log line of a finished stage (the ones `grep '^tilt'` and the README quote)."""
+    """The log line of a finished stage (the ones `grep '^tilt'` finds)."""
     how = f" by {stage['failed_by']}" if "failed_by" in stage else ""
     gone = stage.get("gone", [])
     alone = f"; {', '.join(gone)} toppled off alone" if stage["outcome"] == "equilibrium" and gone else ""
