@@ -19,7 +19,7 @@ LAC_DU_BONNET_SPECIMEN = (0.062, 0.155)  # width, height [m] (the laboratory sam
 LAC_DU_BONNET_DISCS = dict(d_avg=0.745e-3, d_ratio=1.66)  # mean diameter [m], Dmax/Dmin (Table 4-4)
 TABLE_4_5 = {"thesis_hdpac": dict(young_modulus=62e9, poisson_ratio=0.231, ucs=187.5e6),  # [Pa, -, Pa]
              "pfc2d": dict(young_modulus=70.9e9, poisson_ratio=0.237, ucs=199.1e6)}
-TABLE_4_6 = dict(b=0.11, h=0.32)  # block on an incline [m]
+TABLE_4_6 = dict(b=0.11, h=0.32, alpha=26.0, phi=26.5)  # block on an incline [m, m, deg, deg]
 # the blocks of §4.4: Table 5-6's stiffnesses and damping (bonds unbreakable)
 TABLE_5_6_ROCK = dict(young=15e6, knKs=1.4, density=2340.0, bondYoung=15.9e6, bondKnKs=1.8, normalDamping=0.13,
                       bondNormalDamping=0.2)
@@ -36,6 +36,7 @@ TABLE_5_1 = {  # tests 1-3
 }
 TABLE_5_1_COMMON = dict(density=2880.0, frictionAngle=math.atan(0.45), bondNormalDamping=0.2, normalDamping=0.13)
 UCS_SPECIMEN = (0.047, 0.10)  # width, height [m]
+UCS_TEST = dict(rmin=1e-3, rmax=2.5e-3, velocity=0.01)  # disc radii [m], platen speed [m/s] (§5.2.3)
 LAB_UCS = 56.7e3  # [Pa] mean of the laboratory tests
 BLOCK_TENSILE_STRENGTH = 31.37e3  # [Pa] §5.2.1
 

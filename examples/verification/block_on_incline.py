@@ -31,7 +31,7 @@ from toppling.load import tilting
 from toppling.models import incline
 from toppling.run.steps import check_stable, run_steps
 
-readParamsFromTable(**params.TABLE_4_6, alpha=26.0, phi=26.5, rmax=0.008, smooth=1, duration=0.6, seed=1,
+readParamsFromTable(**params.TABLE_4_6, rmax=0.008, smooth=1, duration=0.6, seed=1,
                     out="results/block_on_incline", noTableOk=True)
 from yade.params import table  # noqa: E402  (filled by readParamsFromTable)
 

@@ -10,7 +10,7 @@ negligible against q_u ~ 190 MPa, so this test is unconfined.
 
 Reported next to Table 4-5: E, nu (secant 10-50 % of the peak), q_u; thesis HDPAC 62 GPa,
 0.231, 187.5 MPa; PFC2D 70.9 GPa, 0.237, 199.1 MPa. Our packing is looser (porosity
-`porosity`, 0.18; PFC2D used 0.16 with locked-in stress, see README), which lowers E and q_u.
+`porosity`, 0.18; PFC2D used 0.16 with locked-in stress, docs/model.md), which lowers E and q_u.
 
     ./yade -x -j2 -n examples/verification/lac_du_bonnet.py      # full size, ~18k discs, tens of minutes
     ./yade-batch -j1 --lines 3,4 examples/verification/lac_du_bonnet.table examples/verification/lac_du_bonnet.py

@@ -6,7 +6,7 @@ A 4.7 x 10 cm specimen of discs (R 1-2.5 mm), bonded, compressed between platens
 2015, quoted in §5.2.3).
 
 Differences from the thesis, stated: porosity 0.18 instead of 0.12 (0.12 needs locked-in
-overlap, see README), bond radius multiplier 1 (not given), bond gap `bond_gap` x Rmin.
+overlap, docs/model.md), bond radius multiplier 1 (not given), bond gap `bond_gap` x Rmin.
 
     ./yade -x -n examples/verification/ucs.py            # test=1 (Table 5-1 column)
 """
@@ -19,7 +19,7 @@ from toppling.build import engines
 from toppling.io import output
 from toppling.models import specimen
 
-readParamsFromTable(test=1, rmin=1e-3, rmax=2.5e-3, porosity=0.18, bond_gap=0.1, relax_steps=500, velocity=0.01, seed=1, out="results/ucs",
+readParamsFromTable(test=1, **params.UCS_TEST, porosity=0.18, bond_gap=0.1, relax_steps=500, seed=1, out="results/ucs",
                     noTableOk=True)
 from yade.params import table  # noqa: E402  (filled by readParamsFromTable)
 
