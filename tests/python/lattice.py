@@ -4,7 +4,7 @@ import math
 from yade import O
 from yade.wrapper import ParallelBondMat
 
-from toppling.build import bonding, engines
+from toppling.build import bonding, boundary, engines
 from toppling.build.discs import disc
 
 R = 0.01  # disc radius of the test scenes [m]
@@ -52,3 +52,11 @@ def leapfrog_energy(law) -> float:
                   + 0.5 * b.state.inertia[2] * w * b.state.angVel[2] for b, (v, w) in zip(dynamic, before))
     return kinetic + law.elasticEnergy()
 
+
+def pull_until_broken(body_id: int) -> float:
+    """Pull disc ``body_id`` off along +y until a bond breaks; the time of the step that broke it."""
+    boundary.move([body_id], (0, 0.01))
+    while not engines.bond_law().breakMode:
+        when = O.time
+        O.step()
+    return when

@@ -5,7 +5,7 @@ import os
 import xml.etree.ElementTree as ET
 
 import pytest
-from lattice import R, material
+from lattice import R, material, pull_until_broken
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
 from yade import O
@@ -27,15 +27,6 @@ def read(path):
 def field(grid, name, cells=False):
     data = grid.GetCellData() if cells else grid.GetPointData()
     return vtk_to_numpy(data.GetArray(name))
-
-
-def pull_until_broken(body_id: int) -> float:
-    """Pull disc ``body_id`` off along +y until a bond breaks; the time of the step that broke it."""
-    boundary.move([body_id], (0, 0.01))
-    while not engines.bond_law().breakMode:
-        when = O.time
-        O.step()
-    return when
 
 
 def test_series_of_discs_bonds_and_joints(empty_scene, tmp_path):

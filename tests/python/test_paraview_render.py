@@ -6,10 +6,9 @@ import subprocess
 import matplotlib.image
 import numpy as np
 from conftest import REPO
-from test_paraview import pull_until_broken
 from yade import O
 from yade.wrapper import JointSetGeometry, SmoothJointMat
-from lattice import R, material
+from lattice import R, material, pull_until_broken
 
 from toppling.build import bonding, engines, joints
 from toppling.build.discs import disc
