@@ -1,4 +1,4 @@
-"""The slope figure's view: the model's outline, not discs that fell off it."""
+"""The slope figures: the model's outline in view, not discs that fell off it; the model's joints by set."""
 import numpy as np
 import pytest
 from matplotlib import image
@@ -27,7 +27,7 @@ def test_a_fallen_disc_does_not_shrink_the_slope_to_a_dot(tmp_path):
         path = plots.slope(str(tmp_path), name, centres, [0.005] * len(centres), np.zeros_like(centres),
                            [], [], limits=view)
         rgb = image.imread(path)[..., :3]
-        return float((rgb.sum(axis=2) < 1.5).mean())  # dark pixels: discs (displacement 0 is dark purple)
+        return float((rgb.sum(axis=2) < 2.5).mean())  # discs (grey where nothing moved) and the axes' ink
 
     assert drawn_share(fallen, "fallen") == pytest.approx(drawn_share(grid, "standing"), rel=0.1)
 
@@ -47,3 +47,14 @@ def test_the_overall_surface_is_drawn_dashed_beside_the_two_it_splits_into(tmp_p
         return float((image.imread(path)[..., :3].sum(axis=2) < 0.5).sum())
 
     assert len(planes) == 2 and dark("with", overall=overall) > dark("without") + 50
+
+
+def test_the_model_picture_draws_each_joint_set_in_its_colour_and_marks_the_fixed_discs(tmp_path):
+    centres = np.array([(x, y) for x in np.arange(0.005, 0.2, 0.01) for y in np.arange(0.005, 0.1, 0.01)])
+    joints = [((0.1, 0.0), (0.1, 0.1), 0), ((0.0, 0.05), (0.2, 0.05), 1)]  # a main joint and a cross joint
+    held = centres[:, 1] < 0.01
+    path = plots.model(str(tmp_path), "model", centres, [0.005] * len(centres), np.zeros_like(centres), held,
+                       joints, ("main joints", "cross joints"), limits=(-0.02, 0.22, -0.02, 0.12))
+    rgb = image.imread(path)[..., :3]
+    orange = (rgb[..., 0] > 0.9) & (rgb[..., 1] > 0.4) & (rgb[..., 1] < 0.7) & (rgb[..., 2] < 0.2)
+    assert orange.sum() > 50  # the cross joint's set, drawn darkorange
