@@ -6,7 +6,17 @@
 set -euo pipefail
 version=$1 dest=$2
 tree="$dest/trunk-$version"
-[ -f "$tree/CMakeLists.txt" ] && { echo "YADE source: $tree (cached)"; exit 0; }
+patches=$(cd "$(dirname "${BASH_SOURCE[0]}")/../patches" && pwd)
+
+# Our patches (patches/*.patch, each says why), applied once: a tree that has one reverses it cleanly.
+apply_patches() {
+  for p in "$patches"/*.patch; do
+    if patch -d "$tree" -p1 -R --dry-run -s -f < "$p" > /dev/null 2>&1; then continue; fi
+    patch -d "$tree" -p1 -s -f < "$p" || { echo "fetch-yade-source: $p does not apply to $tree" >&2; exit 1; }
+    echo "YADE source: applied $(basename "$p")"
+  done
+}
+[ -f "$tree/CMakeLists.txt" ] && { echo "YADE source: $tree (cached)"; apply_patches; exit 0; }
 
 uri=$(awk '/^URIs:/{print $2; exit}' /etc/apt/sources.list.d/*.sources 2>/dev/null || true)
 [ -n "$uri" ] || uri=$(awk '$1=="deb"{print $2; exit}' /etc/apt/sources.list 2>/dev/null || true)
@@ -28,3 +38,4 @@ apt-get "${apt_opts[@]}" -qq update
 tar -xjf "$dest/yade_$version.orig.tar.bz2" -C "$dest"
 [ -f "$tree/CMakeLists.txt" ] || { echo "fetch-yade-source: $tree not found after unpacking" >&2; exit 1; }
 echo "YADE source: $tree"
+apply_patches
