@@ -9,8 +9,11 @@ from yade import O
 
 
 class Checkpoint:
-    """``<folder>/checkpoint.yade.bz2`` (the scene, by ``O.save``) + ``checkpoint.json`` (the
-    driver's own state: where in its loop it was)."""
+    """``<folder>/checkpoint.yade.bz2``: the scene (by ``O.save``) with the driver's own state
+    (where in its loop it was) inside it, in ``O.tags``, so that the two can never come from two
+    different moments; ``checkpoint.json`` is a copy of the state to read without loading the scene."""
+
+    TAG = "toppling.checkpoint"
 
     def __init__(self, folder: str):
         os.makedirs(folder, exist_ok=True)
@@ -18,18 +21,27 @@ class Checkpoint:
         self.state_path = os.path.join(folder, "checkpoint.json")
 
     def exists(self) -> bool:
-        return os.path.exists(self.scene_path) and os.path.exists(self.state_path)
+        return os.path.exists(self.scene_path)
 
     def save(self, state: dict[str, Any]) -> None:
-        # Both written aside and then moved into place: a run killed while saving (a long run is
-        # stopped at any moment) leaves the previous checkpoint whole.
+        # Written aside and moved into place in one rename: a run killed while saving (a long run
+        # is stopped at any moment) leaves the previous checkpoint whole.
+        text = json.dumps(state)
+        O.tags[self.TAG] = text
         scene_tmp = self.scene_path.replace("checkpoint.", "checkpoint.saving.")
         O.save(scene_tmp)
+        os.replace(scene_tmp, self.scene_path)
         state_tmp = self.state_path + ".tmp"
         with open(state_tmp, "w") as f:
-            json.dump(state, f)
-        os.replace(scene_tmp, self.scene_path)
+            f.write(text)
         os.replace(state_tmp, self.state_path)
+
+    def saved_inputs(self) -> dict[str, Any]:
+        """The parameters of the checkpointed run, from the copy (or, without it, the scene)."""
+        if os.path.exists(self.state_path):
+            with open(self.state_path) as f:
+                return json.load(f).get("inputs", {})
+        return self.load().get("inputs", {})
 
     def continues(self, inputs: dict[str, Any], resume: int, free: Sequence[str] = ()) -> bool:
         """Whether a run with parameters ``inputs`` continues this checkpoint rather than starting
@@ -44,8 +56,7 @@ class Checkpoint:
             return bool(resume)
         if not self.exists():
             return False
-        with open(self.state_path) as f:
-            saved = json.load(f).get("inputs", {})
+        saved = self.saved_inputs()
 
         def fixed(d: dict[str, Any]) -> dict[str, Any]:
             return {k: v for k, v in json.loads(json.dumps(d)).items() if k not in free}  # as stored
@@ -63,5 +74,4 @@ class Checkpoint:
         if not self.exists():
             raise FileNotFoundError(f"no checkpoint in {os.path.dirname(self.scene_path)}: run without resume first")
         O.load(self.scene_path)
-        with open(self.state_path) as f:
-            return json.load(f)
+        return json.loads(O.tags[self.TAG])
