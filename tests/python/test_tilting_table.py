@@ -1,4 +1,7 @@
 """The tilting-table example stops on bad parameters with a message naming them, before it builds anything."""
+import os
+import subprocess
+
 import pytest
 from conftest import run_yade
 
@@ -33,3 +36,31 @@ def test_a_parameter_out_of_range_stops_the_run(tmp_path, name, value, valid):
     shown = repr(value) if isinstance(value, str) else value
     assert f"{name} = {shown} is invalid: it must be {valid}" in proc.stderr + proc.stdout
     assert not (tmp_path / "out").exists()
+
+
+def mounted_tmpfs(path, options: str):
+    """A tmpfs at ``path`` (root only), unmounted by the caller."""
+    if os.geteuid() != 0:
+        pytest.skip("needs root to mount a tmpfs")
+    path.mkdir()
+    subprocess.run(["mount", "-t", "tmpfs", "-o", options, "tmpfs", str(path)], check=True)
+    return path
+
+
+@pytest.mark.parametrize("options, says", [("size=1m", "MB free and the run needs about"),
+                                           ("size=64m,ro", "cannot be written (Read-only file system)")])
+def test_an_out_folder_too_small_or_read_only_is_refused_before_the_model_is_built(tmp_path, options, says):
+    disk = mounted_tmpfs(tmp_path / "disk", options)
+    try:
+        proc = run_yade(EXAMPLE, tmp_path, rmin=0.002, rmax=0.008, out=str(disk / "run"))
+    finally:
+        subprocess.run(["umount", str(disk)], check=True)
+    assert proc.returncode != 0
+    assert f"out = '{disk}/run' " in proc.stderr + proc.stdout and says in proc.stderr + proc.stdout
+    assert "cross joints" not in proc.stdout  # nothing was built
+
+
+def test_an_out_folder_under_a_file_is_refused_by_name(tmp_path):
+    (tmp_path / "file").write_text("")
+    proc = run_yade(EXAMPLE, tmp_path, rmin=0.002, rmax=0.008, out=str(tmp_path / "file" / "run"))
+    assert proc.returncode != 0 and f"out = '{tmp_path}/file/run' cannot be written" in proc.stderr + proc.stdout

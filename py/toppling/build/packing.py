@@ -52,10 +52,15 @@ def _check_inputs(polygon: PolygonRegion, rmin: float, rmax: float, porosity: fl
         raise ValueError(f"the polygon ({hi[0] - lo[0]:.3g} x {hi[1] - lo[1]:.3g}) is too small for rmax = {rmax}")
 
 
+def disc_count(area: float, rmin: float, rmax: float, porosity: float) -> int:
+    """How many discs of radii uniform in rmin..rmax fill ``area`` at ``porosity``."""
+    mean_r2 = rmin**2 if rmax == rmin else (rmax**3 - rmin**3) / (3 * (rmax - rmin))
+    return max(1, round((1 - porosity) * area / (math.pi * mean_r2)))
+
+
 def _radii(area: float, rmin: float, rmax: float, porosity: float, rng: random.Random) -> list[float]:
     """Uniform radii whose total area is exactly (1 - porosity) * area."""
-    mean_r2 = rmin**2 if rmax == rmin else (rmax**3 - rmin**3) / (3 * (rmax - rmin))
-    n = max(1, round((1 - porosity) * area / (math.pi * mean_r2)))
+    n = disc_count(area, rmin, rmax, porosity)
     radii = [rng.uniform(rmin, rmax) for _ in range(n)]
     scale = math.sqrt((1 - porosity) * area / (math.pi * sum(r * r for r in radii)))
     return [r * scale for r in radii]

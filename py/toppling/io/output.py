@@ -4,6 +4,7 @@ from __future__ import annotations
 import json
 import math
 import os
+import shutil
 from typing import Any
 
 import matplotlib
@@ -15,6 +16,24 @@ import matplotlib.pyplot as plt  # noqa: E402
 def output_dir(out: str) -> str:
     """Create (if needed) and return the output folder."""
     os.makedirs(out, exist_ok=True)
+    return out
+
+
+def prepare_out(out: str, need: float = 0.0) -> str:
+    """Create ``out`` and check, before a run starts, that it can be written and has ``need``
+    bytes free: a long run must not end in a traceback at its first write. Returns ``out``."""
+    try:
+        os.makedirs(out, exist_ok=True)
+        probe = os.path.join(out, ".toppling-write-test")
+        with open(probe, "w") as f:
+            f.write("x")
+        os.remove(probe)
+    except OSError as e:
+        raise OSError(f"out = {out!r} cannot be written ({e.strerror}): choose a folder you can write to") from None
+    free = shutil.disk_usage(out).free
+    if free < need:
+        raise OSError(f"out = {out!r} has {free / 1e6:.1f} MB free and the run needs about {need / 1e6:.0f} MB "
+                      "(checkpoints, ParaView series, pictures): free some space or choose another folder")
     return out
 
 
