@@ -27,6 +27,7 @@ from yade.utils import readParamsFromTable
 from examples import params
 from toppling.build import engines
 from toppling.io import output
+from toppling.io.params import check
 from toppling.load import tilting
 from toppling.models import incline
 from toppling.run.steps import check_stable, run_steps
@@ -34,6 +35,8 @@ from toppling.run.steps import check_stable, run_steps
 readParamsFromTable(**params.TABLE_4_6, rmax=0.008, smooth=1, duration=0.6, seed=1,
                     out="results/block_on_incline", noTableOk=True)
 from yade.params import table  # noqa: E402  (filled by readParamsFromTable)
+
+check(table, b="(0, inf)", h="(0, inf)", alpha="[0, 90)", phi="[0, 90)", rmax="(0, inf)", duration="(0, inf)")
 
 setup = incline.build(table.b, table.h, table.rmax / params.PACKING_R_RATIO, table.rmax, params.TABLE_5_6_ROCK, table.phi, smooth=bool(table.smooth),
                       seed=table.seed)

@@ -18,6 +18,7 @@ from yade.utils import readParamsFromTable
 
 from examples import params
 from toppling.io import output
+from toppling.io.params import check
 from toppling.load import tilting
 from toppling.models import incline
 from toppling.run.steps import run_steps
@@ -25,6 +26,8 @@ from toppling.run.steps import run_steps
 readParamsFromTable(phi=math.degrees(math.atan(0.4)), rmax=0.012, porosity=0.2, step=0.25, stage_time=0.05, seed=1,
                     out="results/tilt_slide", noTableOk=True)
 from yade.params import table  # noqa: E402  (filled by readParamsFromTable)
+
+check(table, phi="[4, 86)", rmax="(0, inf)", porosity="(0, 1)", step="(0, 4]", stage_time="(0, inf)")
 
 B, H = 0.2, 0.05
 setup = incline.build(B, H, table.rmax / params.PACKING_R_RATIO, table.rmax, params.TABLE_5_6_ROCK, table.phi, porosity=table.porosity, seed=table.seed)
