@@ -13,6 +13,8 @@ from yade.wrapper import (Bo1_Box_Aabb, Bo1_Sphere_Aabb, Bo1_Wall_Aabb, ForceRes
                           Law2_ScGeom_ParallelBondPhys_ParallelBond,
                           Law2_ScGeom_SmoothJointPhys_SmoothJoint, NewtonIntegrator)
 
+from toppling.checks import require
+
 
 G = 9.81  # [m/s2]
 
@@ -44,8 +46,7 @@ def engines(gravity=(0.0, -G, 0.0), local_damping: float = 0.0,
 def check_damping(damping: float, name: str = "local_damping") -> None:
     """Raise ValueError unless ``damping`` (NewtonIntegrator's local damping, called ``name``
     where the user set it) is in [0, 1)."""
-    if not 0 <= damping < 1:
-        raise ValueError(f"{name} = {damping} is invalid: it must be in [0, 1)")
+    require(name, damping, "[0, 1)")
 
 
 def newton() -> NewtonIntegrator:
@@ -65,8 +66,7 @@ def set_local_damping(damping: float) -> None:
 def check_safety(safety: float, name: str = "safety") -> None:
     """Raise ValueError unless ``safety`` (GlobalStiffnessTimeStepper's coefficient of
     sqrt(2 m/K), called ``name`` where the user set it) is in (0, 1]."""
-    if not 0 < safety <= 1:
-        raise ValueError(f"{name} = {safety} is invalid: it must be in (0, 1]")
+    require(name, safety, "(0, 1]")
 
 
 def limit_timestep() -> None:

@@ -1,9 +1,10 @@
-"""toppling.io.params: intervals as written in maths, and the first parameter outside its own named."""
+"""toppling.checks and toppling.io.params: intervals as written in maths, and the first parameter outside its own named."""
 from types import SimpleNamespace
 
 import pytest
 
-from toppling.io.params import check, within
+from toppling.checks import within
+from toppling.io.params import check
 
 
 def test_open_and_closed_ends_and_infinity():
