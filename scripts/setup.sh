@@ -23,7 +23,9 @@ fi
 paraview_python="${TOPPLING_CACHE:-${XDG_CACHE_HOME:-$HOME/.cache}/toppling}/paraview"
 if [ ! -d "$paraview_python/usr/lib/python3/dist-packages/paraview" ]; then
   download=$(mktemp -d)
-  (cd "$download" && apt-get download -q python3-paraview && dpkg-deb -x python3-paraview_*.deb "$paraview_python")
+  sudo_cmd=(); [ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
+  (cd "$download" && { apt-get download -q python3-paraview || { "${sudo_cmd[@]}" apt-get update -qq &&
+    apt-get download -q python3-paraview; }; } && dpkg-deb -x python3-paraview_*.deb "$paraview_python")
   rm -rf "$download"
 fi
 

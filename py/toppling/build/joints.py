@@ -61,6 +61,13 @@ def install_joints(sets: Sequence[tuple[JointSetGeometry, SmoothJointMat]], lo, 
     return system
 
 
+def trace(centre, normal, half: float) -> tuple[tuple[float, float], tuple[float, float]]:
+    """The ends of a joint's trace through ``centre``: ``half`` along the joint either way (the
+    joint runs at right angles to its ``normal``)."""
+    along = (-normal[1] * half, normal[0] * half)
+    return (centre[0] - along[0], centre[1] - along[1]), (centre[0] + along[0], centre[1] + along[1])
+
+
 def joint_traces(positions: dict[int, tuple[float, float]]) -> list[tuple[tuple, tuple, int]]:
     """The installed joints as drawn on a picture: per joint pair of the scene's JointSystem, a
     segment of its set's joint line through the pair's midpoint, as wide as the smaller disc,
@@ -73,9 +80,7 @@ def joint_traces(positions: dict[int, tuple[float, float]]) -> list[tuple[tuple,
     for i, j, s in zip(system.pairId1, system.pairId2, system.pairSet):
         (xi, yi), (xj, yj) = positions[i][:2], positions[j][:2]
         half = min(O.bodies[i].shape.radius, O.bodies[j].shape.radius)
-        along = (-normals[s][1] * half, normals[s][0] * half)
-        mid = (0.5 * (xi + xj), 0.5 * (yi + yj))
-        traces.append(((mid[0] - along[0], mid[1] - along[1]), (mid[0] + along[0], mid[1] + along[1]), s))
+        traces.append((*trace((0.5 * (xi + xj), 0.5 * (yi + yj)), normals[s], half), s))
     return traces
 
 

@@ -30,7 +30,7 @@ import numpy as np
 from yade import O
 from yade.wrapper import ParallelBondPhys, SmoothJointPhys, Sphere
 
-from toppling.build import boundary, engines
+from toppling.build import boundary, engines, joints
 
 KINDS = ("discs", "bonds", "cracks", "joints")
 
@@ -127,10 +127,9 @@ class ParaViewSeries:
         ends, data = [], {"set": [], "normal_force": [], "shear_force": [], "slip": []}
         for I in O.interactions:
             if I.isReal and isinstance(I.phys, SmoothJointPhys):
-                along = np.cross((0.0, 0.0, 1.0), tuple(I.phys.jointNormal))
                 half = min(O.bodies[I.id1].shape.radius, O.bodies[I.id2].shape.radius)  # the contact's half-width
-                centre = np.array(tuple(I.geom.contactPoint))
-                ends += [centre - half * along, centre + half * along]
+                centre = tuple(I.geom.contactPoint)
+                ends += [(*end, centre[2]) for end in joints.trace(centre, tuple(I.phys.jointNormal), half)]
                 data["set"].append(I.phys.jointSet)
                 data["normal_force"].append(I.phys.jointNormalForce)
                 data["shear_force"].append(I.phys.jointShearForce)
