@@ -5,6 +5,7 @@
 set -euo pipefail
 repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 start=$(date +%s)
+sudo_cmd=(); [ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
 
 mapfile -t packages < <(grep -v '^\s*#' "$repo/scripts/apt-packages.txt" | sed '/^\s*$/d')
 missing=()
@@ -13,7 +14,6 @@ for p in "${packages[@]}"; do
 done
 if [ ${#missing[@]} -gt 0 ]; then
   echo "setup: installing ${missing[*]}"
-  sudo_cmd=(); [ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
   "${sudo_cmd[@]}" apt-get update -qq
   DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"
 fi
@@ -23,7 +23,6 @@ fi
 paraview_python="${TOPPLING_CACHE:-${XDG_CACHE_HOME:-$HOME/.cache}/toppling}/paraview"
 if [ ! -d "$paraview_python/usr/lib/python3/dist-packages/paraview" ]; then
   download=$(mktemp -d)
-  sudo_cmd=(); [ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
   (cd "$download" && { apt-get download -q python3-paraview || { "${sudo_cmd[@]}" apt-get update -qq &&
     apt-get download -q python3-paraview; }; } && dpkg-deb -x python3-paraview_*.deb "$paraview_python")
   rm -rf "$download"
