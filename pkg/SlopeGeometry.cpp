@@ -41,7 +41,12 @@ toppling::geometry::Region PolygonRegion::toGeometry() const
 		holes.push_back(polygon(vector<Vector2r>(holeVertices.begin() + start, holeVertices.begin() + start + n), "holeVertices"));
 		start += n;
 	}
-	return toppling::geometry::Region(polygon(vertices, "vertices"), std::move(holes));
+	try {
+		return toppling::geometry::Region(polygon(vertices, "vertices"), std::move(holes));
+	} catch (const std::invalid_argument& e) {
+		if (std::string(e.what()).rfind("PolygonRegion.", 0) == 0) throw;
+		throw std::invalid_argument(std::string("PolygonRegion.holeVertices: ") + e.what());
+	}
 }
 
 boost::python::list PolygonRegion::containsMany(const boost::python::list& points, Real pad) const
@@ -75,6 +80,11 @@ toppling::geometry::JointSet JointSetGeometry::toGeometry() const
 	for (size_t i = 0; i < segmentStarts.size(); ++i)
 		g.explicitSegments.push_back(
 		        { { double(segmentStarts[i].x()), double(segmentStarts[i].y()) }, { double(segmentEnds[i].x()), double(segmentEnds[i].y()) } });
+	try {
+		g.validate();
+	} catch (const std::invalid_argument& e) {
+		throw std::invalid_argument(std::string("JointSetGeometry.") + e.what());
+	}
 	return g;
 }
 

@@ -55,7 +55,7 @@ public:
 	toppling::geometry::JointSet toGeometry() const;
 	boost::python::list          segmentsPy(const Vector2r& lo, const Vector2r& hi) const;
 	long                         band(const Vector2r& p) const { return toGeometry().band({ p.x(), p.y() }); }
-	void                         postLoad(JointSetGeometry&) { toGeometry().validate(); }
+	void                         postLoad(JointSetGeometry&) { toGeometry(); }
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(JointSetGeometry, Serializable,
 		"Where the joints of one set are, in the xy cross-section.",

@@ -30,16 +30,21 @@ def with_out(tmp_path, params: dict) -> dict:
     return {"out": str(tmp_path / "out"), **params}
 
 
-def run_yade(path: str, tmp_path, threads: int = 1, **params) -> subprocess.CompletedProcess:
-    """Run ``./yade -x -n <path>`` headless with ``params`` (through a one-line
-    readParamsFromTable table; see ``with_out``)."""
+def yade_command(path: str, tmp_path, threads: int = 1, **params) -> tuple[list[str], dict]:
+    """The command and environment of ``./yade -x -n <path>`` run headless with ``params``
+    (through a one-line readParamsFromTable table; see ``with_out``)."""
     params = with_out(tmp_path, params)
     table = tmp_path / "params.table"
     table.write_text(" ".join(params) + "\n" + " ".join(repr(v) if isinstance(v, str) else str(v)
                                                          for v in params.values()) + "\n")
     env = dict(os.environ, YADE_BATCH=f"{table}:2")
-    return subprocess.run([os.path.join(REPO, "yade"), "-x", "-n", "-j", str(threads), os.path.join(REPO, path)],
-                          env=env, capture_output=True, text=True, timeout=600)
+    return [os.path.join(REPO, "yade"), "-x", "-n", "-j", str(threads), os.path.join(REPO, path)], env
+
+
+def run_yade(path: str, tmp_path, threads: int = 1, **params) -> subprocess.CompletedProcess:
+    """Run ``yade_command``'s command to its end."""
+    command, env = yade_command(path, tmp_path, threads, **params)
+    return subprocess.run(command, env=env, capture_output=True, text=True, timeout=600)
 
 
 def run_example(path: str, tmp_path, threads: int = 1, **params) -> dict:

@@ -18,6 +18,7 @@ from yade.wrapper import ParallelBondMat
 from toppling.build import bonding, engines
 from toppling.build.discs import disc
 from toppling.io import output
+from toppling.io.params import check
 from toppling.run.steps import run_steps
 
 readParamsFromTable(load="pull", compression=0.0, radius=0.01, tensile=1e6, cohesion=1e6, friction_deg=30.0,
@@ -27,6 +28,7 @@ from yade.params import table  # noqa: E402  (filled by readParamsFromTable)
 STEPS_TO_BREAK = 2000
 if table.load not in ("pull", "bend", "shear"):
     raise ValueError(f"load = {table.load!r} is invalid: it must be one of pull, bend, shear")
+check(table, compression="[0, inf)", radius="(0, inf)", tensile="(0, inf)", cohesion="(0, inf)", friction_deg="[0, 90)")
 weak_shear = table.load == "shear"  # make the other mode unreachable
 mat = ParallelBondMat(young=1e9, density=2700.0, bondYoung=1e9, bondKnKs=2.0, knKs=2.0,
                       bondTensileStrength=1e12 if weak_shear else table.tensile,

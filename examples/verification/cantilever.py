@@ -22,6 +22,7 @@ from examples import params
 from toppling.build import bonding, engines
 from toppling.build.discs import disc
 from toppling.io import output
+from toppling.io.params import check
 from toppling.run.steps import run_steps
 
 BEAM, LOAD = params.TABLE_4_2, params.TABLE_4_3
@@ -29,6 +30,8 @@ readParamsFromTable(force=LOAD["force"], moment=LOAD["moment"], young=BEAM["youn
                     discs=11, out="results/cantilever", noTableOk=True)
 from yade.params import table  # noqa: E402  (filled by readParamsFromTable)
 
+check(table, force="(-inf, inf)", moment="(-inf, inf)", young="(0, inf)", shear_modulus="(0, inf)",
+      discs="whole [2, inf)")
 L, T, H = BEAM["length"], BEAM["thickness"], BEAM["depth"]
 R = L / (2 * (table.discs - 1))
 mat = ParallelBondMat(young=table.young, density=BEAM["density"], thickness=T, bondYoung=table.young,

@@ -21,11 +21,14 @@ from examples import params
 from toppling.build import engines
 from toppling.build.discs import disc
 from toppling.io import output
+from toppling.io.params import check
 from toppling.run.steps import run_steps
 
 readParamsFromTable(**params.TABLE_4_1, steps=40000, out="results/free_fall", noTableOk=True)
 from yade.params import table  # noqa: E402  (filled by readParamsFromTable)
 
+check(table, radius="(0, inf)", density="(0, inf)", kn="(0, inf)", kn_boundary="(0, inf)", drop="(0, inf)",
+      g="(0, inf)", dt="(0, inf)", steps="whole [1, inf)")
 THICKNESS = 1.0
 disc_mat = ParallelBondMat(young=table.kn / (2 * THICKNESS), density=table.density, thickness=THICKNESS)
 wall_mat = ParallelBondMat(young=table.kn_boundary / (2 * THICKNESS), density=table.density, thickness=THICKNESS)

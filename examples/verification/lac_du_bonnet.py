@@ -23,6 +23,7 @@ from yade.wrapper import ParallelBondMat
 from examples import params
 from toppling.build import engines
 from toppling.io import output
+from toppling.io.params import check
 from toppling.models import specimen
 
 readParamsFromTable(scale=1.0, d_avg=params.LAC_DU_BONNET_DISCS["d_avg"], porosity=0.18, bond_gap=0.1, relax_steps=500, velocity=0.05,
@@ -33,8 +34,8 @@ D_RATIO = params.LAC_DU_BONNET_DISCS["d_ratio"]
 WIDTH, HEIGHT = params.LAC_DU_BONNET_SPECIMEN
 THESIS, PFC2D = params.TABLE_4_5["thesis_hdpac"], params.TABLE_4_5["pfc2d"]
 
-if not 0 < table.scale <= 1:
-    raise ValueError(f"scale = {table.scale} is invalid: it must be in (0, 1]")
+check(table, scale="(0, 1]", d_avg="(0, inf)", porosity="(0, 1)", bond_gap="[0, inf)", relax_steps="whole [0, inf)",
+      velocity="(0, inf)", local_damping="[0, 1)", seed="whole [0, inf)")
 rmin = table.d_avg / (1 + D_RATIO)  # D_avg = (Dmin + Dmax) / 2
 rock = ParallelBondMat(**params.TABLE_4_4)
 spec = specimen.build_specimen(table.scale * WIDTH, table.scale * HEIGHT, rmin, D_RATIO * rmin, table.porosity,

@@ -16,6 +16,7 @@ from examples import params
 from toppling.build import engines
 from toppling.build.discs import disc
 from toppling.io import output
+from toppling.io.params import check
 from toppling.run.steps import run_steps
 
 readParamsFromTable(beta=params.TABLE_5_2_COMMON["normalDamping"], radius=0.01,
@@ -23,6 +24,7 @@ readParamsFromTable(beta=params.TABLE_5_2_COMMON["normalDamping"], radius=0.01,
                     out="results/restitution", noTableOk=True)
 from yade.params import table  # noqa: E402  (filled by readParamsFromTable)
 
+check(table, beta="[0, 1)", radius="(0, inf)", density="(0, inf)", young="(0, inf)", speed="(0, inf)")
 THICKNESS = 1.0
 mat = ParallelBondMat(young=table.young, density=table.density, thickness=THICKNESS, normalDamping=table.beta)
 O.bodies.append(utils.wall(0, axis=1, material=mat))

@@ -21,7 +21,7 @@ from toppling.io import output
 from toppling.io.params import check
 from toppling.load import tilting
 from toppling.models import incline
-from toppling.run.steps import run_steps
+from toppling.run.steps import run_steps, steps_in
 
 readParamsFromTable(phi=math.degrees(math.atan(0.4)), rmax=0.012, porosity=0.2, step=0.25, stage_time=0.05, seed=1,
                     out="results/tilt_slide", noTableOk=True)
@@ -38,7 +38,7 @@ alpha, slide_tilt, history = table.phi - 4 + table.step, None, []
 while alpha < table.phi + 4 and slide_tilt is None:
     tilting.set_tilt(alpha)
     x0 = O.bodies[setup.toe].state.pos[0]
-    run_steps(max(1, int(table.stage_time / O.dt)))
+    run_steps(steps_in(table.stage_time))
     history.append((alpha, incline.toe_translation(setup, x0)))
     if len(history) > 1 and min(m for _, m in history[-2:]) > 1e-4 * B:  # sustained, not a slip event
         slide_tilt = history[-2][0]

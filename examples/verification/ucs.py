@@ -17,6 +17,7 @@ from yade.wrapper import ParallelBondMat
 from examples import params
 from toppling.build import engines
 from toppling.io import output
+from toppling.io.params import check
 from toppling.models import specimen
 
 readParamsFromTable(test=1, **params.UCS_TEST, porosity=0.18, bond_gap=0.1, relax_steps=500, seed=1, out="results/ucs",
@@ -26,8 +27,8 @@ from yade.params import table  # noqa: E402  (filled by readParamsFromTable)
 TABLE_5_1, LAB_UCS = params.TABLE_5_1, params.LAB_UCS
 (WIDTH, HEIGHT), T = params.UCS_SPECIMEN, 1.0
 
-if table.test not in TABLE_5_1:
-    raise ValueError(f"test = {table.test} is invalid: it must be 1, 2 or 3 (Table 5-1 columns)")
+check(table, test="whole [1, 3]", rmin="(0, inf)", rmax="(0, inf)", velocity="(0, inf)", porosity="(0, 1)",
+      bond_gap="[0, inf)", relax_steps="whole [0, inf)", seed="whole [0, inf)")  # test: a Table 5-1 column
 rock = ParallelBondMat(thickness=T, **params.TABLE_5_1_COMMON, **TABLE_5_1[table.test])
 spec = specimen.build_specimen(WIDTH, HEIGHT, table.rmin, table.rmax, table.porosity, rock, table.relax_steps,
                                   table.bond_gap, table.seed)

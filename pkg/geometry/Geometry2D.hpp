@@ -74,11 +74,15 @@ namespace toppling {
 			        : v(std::move(vertices))
 			{
 				if (v.size() < 3) throw std::invalid_argument("polygon needs at least 3 vertices, got " + std::to_string(v.size()));
-				for (size_t i = 0; i < v.size(); ++i)
+				for (size_t i = 0; i < v.size(); ++i) {
+					if (!std::isfinite(v[i].x) || !std::isfinite(v[i].y))
+						throw std::invalid_argument("vertex " + std::to_string(i) + " is not a finite point");
 					if (norm(edge(i).b - edge(i).a) == 0)
 						throw std::invalid_argument("polygon has a repeated vertex at index " + std::to_string(i));
+				}
 				if (const int i = firstSelfIntersection(); i >= 0)
 					throw std::invalid_argument("polygon is self-intersecting: edge " + std::to_string(i) + " crosses a non-adjacent edge");
+				if (!(area() > 0)) throw std::invalid_argument("polygon has no area: its vertices lie on one line");
 			}
 			size_t                   size() const { return v.size(); }
 			const std::vector<Vec2>& vertices() const { return v; }
@@ -139,6 +143,13 @@ namespace toppling {
 			        : outer_(std::move(outer))
 			        , holes_(std::move(holes))
 			{
+				for (size_t k = 0; k < holes_.size(); ++k) {
+					if (!inside(holes_[k], outer_))
+						throw std::invalid_argument("hole " + std::to_string(k) + " is not inside the outer polygon: every hole must lie within it");
+					for (size_t m = 0; m < k; ++m)
+						if (!apart(holes_[k], holes_[m]))
+							throw std::invalid_argument("hole " + std::to_string(k) + " overlaps hole " + std::to_string(m) + ": holes must be apart");
+				}
 			}
 			bool contains(Vec2 p, double pad = 0) const
 			{
@@ -161,6 +172,20 @@ namespace toppling {
 		private:
 			Polygon              outer_;
 			std::vector<Polygon> holes_;
+
+			static bool edgesCross(const Polygon& a, const Polygon& b)
+			{
+				for (size_t i = 0; i < a.size(); ++i)
+					for (size_t j = 0; j < b.size(); ++j)
+						if (intersects(a.edge(i), b.edge(j))) return true;
+				return false;
+			}
+			// Strictly inside: no edges touch, and a vertex of the inner is in the outer.
+			static bool inside(const Polygon& inner, const Polygon& outer) { return !edgesCross(inner, outer) && outer.contains(inner.vertices()[0]); }
+			static bool apart(const Polygon& a, const Polygon& b)
+			{
+				return !edgesCross(a, b) && !a.contains(b.vertices()[0]) && !b.contains(a.vertices()[0]);
+			}
 		};
 
 	} // namespace geometry

@@ -5,6 +5,7 @@
 
 #include "Geometry2D.hpp"
 #include <map>
+#include <sstream>
 
 namespace yade {
 namespace toppling {
@@ -25,17 +26,18 @@ namespace toppling {
 			Vec2   normal() const { return { -std::sin(dipDeg * pi / 180), std::cos(dipDeg * pi / 180) }; }
 			double persistence() const { return std::isinf(jointLength) ? 1.0 : jointLength / (jointLength + bridgeLength); }
 
+			// Throws std::invalid_argument naming the first attribute outside its range.
 			void validate() const
 			{
+				if (!std::isfinite(origin.x) || !std::isfinite(origin.y)) fail("origin", origin.x, "a finite point");
+				if (!(dipDeg >= -180 && dipDeg <= 180)) fail("dip", dipDeg, "in [-180, 180] deg");
 				if (!explicitSegments.empty()) return;
-				if (!(spacing >= 0))
-					throw std::invalid_argument(
-					        "joint set spacing = " + std::to_string(spacing) + " is invalid: it must be > 0 (or 0 for a single joint)");
+				if (!(spacing >= 0 && std::isfinite(spacing))) fail("spacing", spacing, ">= 0 m (0: the one joint through origin)");
 				if (!(jointLength > 0))
-					throw std::invalid_argument("joint set jointLength = " + std::to_string(jointLength) + " is invalid: it must be > 0");
-				if (!(bridgeLength >= 0))
-					throw std::invalid_argument(
-					        "joint set bridgeLength = " + std::to_string(bridgeLength) + " is invalid: it must be >= 0");
+					fail("jointLength", jointLength, "> 0 m (the persistence jointLength/(jointLength+bridgeLength) is in (0, 1])");
+				if (!(bridgeLength >= 0 && std::isfinite(bridgeLength)))
+					fail("bridgeLength", bridgeLength, ">= 0 m (the persistence jointLength/(jointLength+bridgeLength) is in (0, 1])");
+				if (!std::isfinite(phase)) fail("phase", phase, "finite");
 			}
 
 			// Index of the band between two joints that holds p (fully persistent sets).
@@ -73,6 +75,12 @@ namespace toppling {
 			}
 
 		private:
+			[[noreturn]] static void fail(const char* attribute, double value, const char* range)
+			{
+				std::ostringstream msg;
+				msg << attribute << " = " << value << " is invalid: it must be " << range;
+				throw std::invalid_argument(msg.str());
+			}
 			// Joint pieces along one line, as [t0, t1] intervals covering [tMin, tMax].
 			std::vector<std::pair<double, double>> pieces(double tMin, double tMax) const
 			{

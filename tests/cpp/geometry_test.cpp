@@ -24,6 +24,26 @@ TEST(Polygon, RejectsSelfIntersectionAndDegenerateInput)
 	EXPECT_THROW(Polygon({ { 0, 0 }, { 1, 1 }, { 1, 0 }, { 0, 1 } }), std::invalid_argument); // bow tie
 	EXPECT_THROW(Polygon({ { 0, 0 }, { 1, 0 } }), std::invalid_argument);
 	EXPECT_THROW(Polygon({ { 0, 0 }, { 1, 0 }, { 1, 0 }, { 0, 1 } }), std::invalid_argument);
+	EXPECT_THROW(Polygon({ { 0, 0 }, { 1, 0 }, { 2, 0 } }), std::invalid_argument); // no area
+	EXPECT_THROW(Polygon({ { 0, 0 }, { 1, 0 }, { 0, std::nan("") } }), std::invalid_argument);
+}
+
+TEST(Polygon, EitherOrientationIsTheSameRegion)
+{
+	const Polygon ccw({ { 0, 0 }, { 2, 0 }, { 2, 1 }, { 0, 1 } }), cw({ { 0, 1 }, { 2, 1 }, { 2, 0 }, { 0, 0 } });
+	EXPECT_DOUBLE_EQ(cw.area(), ccw.area());
+	for (Vec2 p : { Vec2 { 1, 0.5 }, Vec2 { 3, 0.5 }, Vec2 { 2, 1 } })
+		EXPECT_EQ(cw.contains(p), ccw.contains(p));
+}
+
+TEST(Region, RejectsHolesOutsideTheOuterOrOverlapping)
+{
+	const Polygon hole({ { 4, 4 }, { 6, 4 }, { 6, 6 }, { 4, 6 } });
+	EXPECT_THROW(Region(square(10), { Polygon({ { 11, 1 }, { 12, 1 }, { 12, 2 } }) }), std::invalid_argument); // outside
+	EXPECT_THROW(Region(square(10), { Polygon({ { 9, 1 }, { 12, 1 }, { 12, 2 } }) }), std::invalid_argument);  // across
+	EXPECT_THROW(Region(square(10), { hole, Polygon({ { 5, 5 }, { 7, 5 }, { 7, 7 } }) }), std::invalid_argument);
+	EXPECT_THROW(Region(square(10), { hole, Polygon({ { 4.5, 4.5 }, { 5.5, 4.5 }, { 5, 5.5 } }) }), std::invalid_argument);
+	EXPECT_NO_THROW(Region(square(10), { hole, Polygon({ { 1, 1 }, { 2, 1 }, { 2, 2 } }) }));
 }
 
 TEST(Region, HolesAndPadding)
@@ -103,6 +123,25 @@ TEST(JointSet, InvalidSpacingIsRejected)
 	JointSet s;
 	s.spacing = -1;
 	EXPECT_THROW(s.segments(Box {}), std::invalid_argument);
+}
+
+TEST(JointSet, EveryAttributeOutsideItsRangeIsRejectedByName)
+{
+	const auto message = [](auto change) {
+		JointSet s;
+		change(s);
+		try {
+			s.validate();
+		} catch (const std::invalid_argument& e) {
+			return std::string(e.what());
+		}
+		return std::string();
+	};
+	EXPECT_EQ(message([](JointSet& s) { s.dipDeg = 200; }).rfind("dip = 200 is invalid: it must be in [-180, 180] deg", 0), 0u);
+	EXPECT_EQ(message([](JointSet& s) { s.jointLength = 0; }).rfind("jointLength = 0 is invalid", 0), 0u);
+	EXPECT_EQ(message([](JointSet& s) { s.bridgeLength = -1; }).rfind("bridgeLength = -1 is invalid", 0), 0u);
+	EXPECT_EQ(message([](JointSet& s) { s.origin.x = std::nan(""); }).rfind("origin = nan is invalid", 0), 0u);
+	EXPECT_EQ(message([](JointSet& s) { s.dipDeg = -20; }), "");
 }
 
 TEST(BlockIndex, TwoSetsMakeRectangularBlocks)

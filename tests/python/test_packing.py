@@ -71,17 +71,6 @@ def test_packer_is_reproducible_and_meets_its_targets(empty_scene):
     assert len(first.discs) == pytest.approx(0.8 * 0.05**2 / (math.pi * (2.5e-3**3 - 1e-3**3) / (3 * 1.5e-3)), abs=1)
 
 
-@pytest.mark.parametrize("kwargs, message", [
-    (dict(rmin=3e-3, rmax=2e-3), "Rmin must not exceed Rmax"),
-    (dict(rmin=1e-3, rmax=2.5e-3, porosity=0.1), "unreachable"),
-    (dict(rmin=1e-3, rmax=2.5e-3, porosity=1.5), "porosity"),
-])
-def test_packer_rejects_bad_input(empty_scene, kwargs, message):
-    square = geometry.region([(0, 0), (0.05, 0), (0.05, 0.05), (0, 0.05)])
-    with pytest.raises(ValueError, match=message):
-        packing.pack_polygon(square, **kwargs)
-
-
 def _overlap(a, b):
     return a[2] + b[2] - math.dist(a[:2], b[:2])
 
@@ -142,8 +131,3 @@ def test_a_combined_yade_predicate_is_packed_with_discs_wholly_inside_it(empty_s
 
     box = packing.pack_polygon(geometry.region(outline), 0.002, 0.004, 0.18, seed=3).discs  # the bounding box's
     assert packed.discs == [d for d in box if inside(*d)] and len(packed.discs) > 0.4 * len(box)
-
-
-def test_an_unbounded_predicate_is_refused_by_name(empty_scene):
-    with pytest.raises(ValueError, match="unbounded"):
-        packing.pack_predicate(pack.notInNotch((0, 0, 0), (1, 0, 0), (0, 1, 0), 0.1), 0.002, 0.004, 0.18)

@@ -216,11 +216,21 @@ def test_a_fresh_run_refuses_more_fail_columns_than_it_watches(empty_scene, tmp_
         fresh_run(tmp_path, protocol(), dataclasses.replace(CRITERIA, fail_columns=2))
 
 
-@pytest.mark.parametrize("name, value, valid", [("checkpoint_every", 0.0, "> 0 (wall seconds)"),
-                                               ("arrest_time", -1.0, "0 (the first failing stage is the failure)"),
-                                               ("stage_rate", -1.0, "0 (each step at once) or > 0 deg/s"),
-                                               ("post_failure_time", -0.1, ">= 0 s"),
-                                               ("damping", 1.0, "in [0, 1)")])
-def test_a_bad_protocol_is_refused_naming_the_parameter(name, value, valid):
-    with pytest.raises(ValueError, match=re.escape(f"{name} = {value} is invalid: it must be {valid}")):
-        protocol(**{name: value})
+def test_a_run_stopped_at_max_wall_time_says_why_and_the_same_command_continues_it(empty_scene, tmp_path, capsys):
+    stopped = fresh_run(tmp_path, protocol(max_wall_time=1e-3))
+    assert stopped.run() is None
+    assert re.fullmatch(r"max_wall_time = 0.001 s reached in the ramp phase at \d+\.\d deg: run the same command "
+                        r"with a larger max_wall_time \(0: no limit\) to continue", stopped.state["stopped"])
+    tilt_report.report(stopped, str(tmp_path), {"failure_tilt_deg": 22, "phi_deg": [0]}, "block")
+    summary = json.loads((tmp_path / "summary.json").read_text())
+    assert summary["failed"] is None and summary["stopped"] == stopped.state["stopped"]
+    assert "stopped before the run's end: max_wall_time" in capsys.readouterr().out
+    O.reset()
+    continued = resumed_run(tmp_path, protocol())
+    assert continued.run() == 23.0 and "stopped" not in continued.state
+
+
+def test_a_stage_that_ends_at_its_time_limit_says_so():
+    stage = {"tilt": 20.0, "outcome": "equilibrium", "moved_mm": 0.1, "gone": []}
+    assert tilt_run.stage_line(stage) == "tilt 20.0 deg: equilibrium (a column top moved 0.1 mm)"
+    assert "equilibrium at max_stage_time (still moving" in tilt_run.stage_line({**stage, "at_time_limit": True})

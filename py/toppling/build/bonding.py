@@ -9,6 +9,7 @@ from yade.wrapper import Sphere
 
 from toppling.build import packing
 from toppling.build.engines import bond_law, limit_timestep
+from toppling.checks import require
 
 
 def _sphere_ids(ids: Optional[Sequence[int]]) -> list[int]:
@@ -32,8 +33,7 @@ def remove_floaters(gap: float = 0.0, min_neighbours: int = 2, ids: Optional[Seq
     "floaters"): a disc with no bond rattles in its pore and, on a joint, wedges the blocks
     apart; with one bond it swings about it. Returns the ids removed.
     """
-    if min_neighbours < 0:
-        raise ValueError(f"min_neighbours = {min_neighbours} is invalid: it must be >= 0")
+    require("min_neighbours", min_neighbours, "[0, inf)")
     count = defaultdict(int)
     for i, j in pairs_within_gap(gap, ids):
         count[i] += 1
@@ -51,8 +51,7 @@ def bond_within_gap(gap: float = 0.0, ids: Optional[Sequence[int]] = None) -> in
     packing has settled (thesis §3.2). Already-bonded pairs are left alone. Returns the number
     of new bonds.
     """
-    if gap < 0:
-        raise ValueError(f"gap = {gap} is invalid: it must be >= 0 m")
+    require("gap", gap, "[0, inf)")
     count = 0
     for i, j in pairs_within_gap(gap, ids):
         interaction = O.interactions[i, j] if O.interactions.has(i, j) else None

@@ -6,6 +6,8 @@ from typing import Iterable, Sequence
 
 from yade import O
 
+from toppling.checks import require
+
 Point = Sequence[float]
 
 
@@ -18,8 +20,7 @@ def _distance(p: Point, a: Point, b: Point) -> float:
 
 def near(segments: Iterable[tuple[Point, Point]], distance: float, ids: Sequence[int] | None = None) -> list[int]:
     """Discs whose centre lies within ``distance`` (the thesis uses Rmax) of any segment."""
-    if distance < 0:
-        raise ValueError(f"distance = {distance} is invalid: it must be >= 0 m")
+    require("distance", distance, "[0, inf)")
     segments = list(segments)
     bodies = O.bodies if ids is None else [O.bodies[i] for i in ids]
     return [b.id for b in bodies

@@ -13,6 +13,8 @@ from typing import Callable, Mapping, Sequence
 import numpy as np
 from yade.wrapper import JointSetGeometry
 
+from toppling.checks import require
+
 
 @dataclass
 class ColumnLayout:
@@ -21,10 +23,11 @@ class ColumnLayout:
     heights: list[float]  # height of columns 1, 2, ... [m]
 
     def __post_init__(self):
-        if self.width <= 0:
-            raise ValueError(f"width = {self.width} is invalid: it must be > 0 m")
-        if not self.heights or min(self.heights) <= 0:
-            raise ValueError("heights are invalid: give at least one column, every height > 0 m")
+        require("width", self.width, "(0, inf)")
+        if not self.heights:
+            raise ValueError("heights = [] is invalid: give at least one column's height")
+        for k, height in enumerate(self.heights):
+            require(f"heights[{k}]", height, "(0, inf)")
 
     @classmethod
     def under_profile(cls, toe_x: float, width: float, count: int, profile: Callable[[float], float]) -> "ColumnLayout":
@@ -88,10 +91,8 @@ class ColumnLayout:
     def stacked_blocks(self, k: int, length: float, phase: float) -> list[float]:
         """Heights of the boundaries between blocks of ``length`` [m] stacked in column k, the
         first at ``phase`` (0 <= phase < length; 0: the lowest block stands on the table)."""
-        if length <= 0:
-            raise ValueError(f"length = {length} is invalid: it must be > 0 m")
-        if not 0 <= phase < length:
-            raise ValueError(f"phase = {phase} is invalid: it must be in [0, {length}) m")
+        require("length", length, "(0, inf)")
+        require("phase", phase, f"[0, {length})")
         count = math.ceil((self.heights[k - 1] - phase) / length)
         return [phase + i * length for i in range(max(count, 0)) if phase + i * length > 0]
 
@@ -105,8 +106,7 @@ class ColumnLayout:
         top block of column G-7, touching F-6 over 8 mm, and a 4 cm sliver on G-7 both slid at
         28 deg). With ``every_cut`` every cut inside a column is a joint: the blocks as stacked,
         rules off."""
-        if block_length <= 0:
-            raise ValueError(f"block_length = {block_length} is invalid: it must be > 0 m")
+        require("block_length", block_length, "(0, inf)")
         starts, ends = [], []
         for k, heights in cuts.items():
             left, right = self.span(k)

@@ -6,6 +6,8 @@ from typing import Iterable, Sequence
 
 from yade import O, utils
 
+from toppling.checks import require
+
 PLANE_DOFS = 'zXY'  # discs move in the xy-plane and spin about z only
 
 
@@ -15,8 +17,7 @@ def disc(center: Sequence[float], radius: float, material, fixed: bool = False):
     Mass and inertia are the disc's, rho*pi*R^2*t and m*R^2/2 (not the sphere's), so that
     2D dynamics match PFC2D/HDPAC.
     """
-    if radius <= 0:
-        raise ValueError(f"disc radius = {radius} is invalid: it must be > 0")
+    require("radius", radius, "(0, inf)")
     body = utils.sphere((center[0], center[1], 0.0), radius, material=material, fixed=fixed)
     set_disc_mass(body, material.thickness)
     if not fixed:

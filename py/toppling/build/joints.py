@@ -27,6 +27,15 @@ def joint_normal(geometry: JointSetGeometry) -> tuple[float, float, float]:
     return (-math.sin(a), math.cos(a), 0.0)
 
 
+def check_segments_inside(geometry: JointSetGeometry, lo, hi) -> None:
+    """Raise ValueError naming the first explicit joint of ``geometry`` with an end outside the box lo..hi."""
+    for k, (a, b) in enumerate(zip(geometry.segmentStarts, geometry.segmentEnds)):
+        if not all(lo[d] <= p[d] <= hi[d] for p in (a, b) for d in (0, 1)):
+            raise ValueError(f"JointSetGeometry.segmentStarts[{k}], segmentEnds[{k}] = ({a[0]:g}, {a[1]:g}), "
+                             f"({b[0]:g}, {b[1]:g}) are invalid: an explicit joint must lie inside the box "
+                             f"lo = ({lo[0]:g}, {lo[1]:g}), hi = ({hi[0]:g}, {hi[1]:g}) m")
+
+
 def install_joints(sets: Sequence[tuple[JointSetGeometry, SmoothJointMat]], lo, hi,
                    pieces: bool = True) -> JointSystem:
     """Install joint sets (geometry, mechanics) in the current scene, within the box lo..hi.
@@ -44,6 +53,7 @@ def install_joints(sets: Sequence[tuple[JointSetGeometry, SmoothJointMat]], lo, 
     materials = list(system.jointMaterials)
     pairs = []
     for geometry, mechanics in sets:
+        check_segments_inside(geometry, lo, hi)
         mechanics.normal = joint_normal(geometry)
         materials.append(O.materials.append(mechanics))
         for i, j in system.crossingPairs(geometry, lo, hi):

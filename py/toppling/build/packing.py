@@ -21,6 +21,7 @@ from yade.wrapper import (Bo1_Facet_Aabb, Bo1_Sphere_Aabb, FrictMat, ForceResett
                           InsertionSortCollider, InteractionLoop, Ip2_FrictMat_FrictMat_FrictPhys,
                           Law2_ScGeom_FrictPhys_CundallStrack, NewtonIntegrator, PolygonRegion, Sphere)
 
+from toppling.checks import require
 from toppling.run.steps import run_steps
 
 START_SIZE = 0.6      # discs are placed at this fraction of their radius
@@ -28,6 +29,7 @@ GROWTH_STAGES = 20
 STEPS_PER_STAGE = 100
 MAX_MEAN_OVERLAP = 0.01  # of Rmin: above it the porosity is not reachable without locked-in stress
 RELAX_ROUNDS, RELAX_STEPS = 40, 250
+BYTES_PER_DISC = 10e3  # a bonded disc with its interactions, packer included (measured: 8.2 kB at R 1-4 mm)
 
 
 @dataclass
@@ -41,15 +43,25 @@ class Packing:
 
 
 def _check_inputs(polygon: PolygonRegion, rmin: float, rmax: float, porosity: float) -> None:
-    if not rmin > 0:
-        raise ValueError(f"rmin = {rmin} is invalid: it must be > 0")
-    if rmin > rmax:
-        raise ValueError(f"rmin = {rmin} > rmax = {rmax}: Rmin must not exceed Rmax")
-    if not 0 < porosity < 1:
-        raise ValueError(f"porosity = {porosity} is invalid: it must be in (0, 1)")
+    require("rmin", rmin, "(0, inf)")
+    require("rmax", rmax, f"[{rmin}, inf)")  # rmin <= rmax
+    require("porosity", porosity, "(0, 1)")
     lo, hi = polygon.aabb()
-    if min(hi[0] - lo[0], hi[1] - lo[1]) < 4 * rmax:
-        raise ValueError(f"the polygon ({hi[0] - lo[0]:.3g} x {hi[1] - lo[1]:.3g}) is too small for rmax = {rmax}")
+    require("rmax", rmax, f"(0, {min(hi[0] - lo[0], hi[1] - lo[1]) / 4:.6g}]")  # a quarter of the polygon's smaller side
+    count = disc_count(polygon.area(), rmin, rmax, porosity)
+    if count * BYTES_PER_DISC > available_memory():
+        raise ValueError(f"rmin = {rmin}, rmax = {rmax} are invalid for this polygon: they make about {count:.3g} discs, "
+                         f"which need about {count * BYTES_PER_DISC / 1e9:.3g} GB, and {available_memory() / 1e9:.3g} GB "
+                         "of memory is available; raise rmin and rmax")
+
+
+def available_memory() -> int:
+    """The memory [bytes] the system can give without swapping (MemAvailable)."""
+    with open("/proc/meminfo") as f:
+        for line in f:
+            if line.startswith("MemAvailable:"):
+                return int(line.split()[1]) * 1024
+    raise OSError("/proc/meminfo has no MemAvailable")
 
 
 def disc_count(area: float, rmin: float, rmax: float, porosity: float) -> int:
@@ -220,7 +232,8 @@ def pack_predicate(predicate, rmin: float, rmax: float, porosity: float = 0.15, 
     does), so the porosity returned is that of the box."""
     lo, hi = predicate.aabb()
     if not all(map(math.isfinite, (lo[0], lo[1], hi[0], hi[1]))):
-        raise ValueError("the predicate is unbounded in the xy-plane: intersect it with a bounded one (a & b)")
+        raise ValueError(f"predicate = {predicate!r} is invalid: it must be bounded in the xy-plane (intersect it "
+                         "with a bounded one: a & b)")
     box = PolygonRegion(vertices=[(lo[0], lo[1]), (hi[0], lo[1]), (hi[0], hi[1]), (lo[0], hi[1])])
     packed = pack_polygon(box, rmin, rmax, porosity, seed)
     packed.discs = [(x, y, r) for x, y, r in packed.discs if predicate((x, y, 0.0), r)]

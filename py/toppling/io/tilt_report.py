@@ -1,6 +1,6 @@
 """What a finished tilting-table run leaves: ``summary.json``, the figures and its last console
 line, for a slope that failed (its failure surface, zones, S/H and T/H, after the post-failure run
-and at the failure's onset) or stood up to max_tilt."""
+and at the failure's onset), stood up to max_tilt, or was stopped at max_wall_time."""
 from __future__ import annotations
 
 import numpy as np
@@ -19,12 +19,24 @@ TABLE_NORMAL_DYDX = 0.0
 def report(run: TiltRun, out: str, thesis: dict, name: str) -> None:
     """Write the run's summary and figures into ``out`` and print its result beside ``thesis``
     (``failure_tilt_deg``, ``phi_deg``); ``name`` (the arrangement) titles them."""
+    if run.state.get("stopped"):
+        report_stopped(run, out, thesis)
+        return
     if warning := ramp_warning(run.state.get("breaks_before_stages") or {}):  # again beside the result it qualifies
         print(warning)
     if run.failure_tilt is None:
         report_stable(run, out, thesis, name)
     else:
         report_failure(run, out, thesis, name)
+
+
+def report_stopped(run: TiltRun, out: str, thesis: dict) -> None:
+    """Stopped at max_wall_time: the summary says why and how far the run came, no failure yet."""
+    record = dict(thesis=thesis, **run.record())
+    tilts = [stage["tilt"] for stage in run.state["stages"] if stage["outcome"] == "equilibrium"]
+    output.write_summary(out, run.state["inputs"], failed=None, failure_tilt_deg=None,
+                         stable_up_to_deg=max(tilts, default=None), phi_deg=[], **record)
+    print(f"stopped before the run's end: {record['stopped']}")
 
 
 def report_stable(run: TiltRun, out: str, thesis: dict, name: str) -> None:

@@ -9,11 +9,13 @@ import numpy as np
 from yade import O
 
 from toppling.build.engines import G, newton
-from toppling.run.steps import check_stable, run_checked, run_steps
+from toppling.run.steps import check_stable, run_checked, run_steps, steps_in
+from toppling.checks import require
 
 
 def set_tilt(alpha_deg: float) -> None:
     """Tilt the table by ``alpha_deg`` towards +x (the toe side): gravity (g sin a, -g cos a)."""
+    require("tilt", alpha_deg, "[0, 90)")
     a = math.radians(alpha_deg)
     newton().gravity = (G * math.sin(a), -G * math.cos(a), 0)
 
@@ -53,9 +55,9 @@ class StageCriteria:
     fail_columns: int = 1
 
     def __post_init__(self):
-        for name in ("chunk", "rest_speed", "fail_displacement", "max_stage_time", "fail_columns"):
-            if getattr(self, name) <= 0:
-                raise ValueError(f"{name} = {getattr(self, name)} is invalid: it must be > 0")
+        for name in ("chunk", "rest_speed", "fail_displacement", "max_stage_time"):
+            require(name, getattr(self, name), "(0, inf)")
+        require("fail_columns", self.fail_columns, "[1, inf)")
         if self.fail_columns != int(self.fail_columns):
             raise ValueError(f"fail_columns = {self.fail_columns} is invalid: it must be a whole number >= 1")
 
@@ -81,13 +83,12 @@ def ramp(from_deg: float, to_deg: float, duration: float, on_chunk: Optional[Cal
     if from_deg == to_deg:
         set_tilt(to_deg)
         return
-    if duration <= 0 or update <= 0:
-        raise ValueError(f"duration = {duration}, update = {update} are invalid: both must be > 0 s")
-    start = O.time if start is None else start
-    every, last_report = max(1, int(update / O.dt)), O.time
+    require("duration", duration, "(0, inf)")
+    require("update", update, "(0, inf)")
+    start, last_report = O.time if start is None else start, O.time
     while O.time - start < duration:
         set_tilt(from_deg + (to_deg - from_deg) * (O.time - start) / duration)
-        run_steps(every)
+        run_steps(steps_in(update))  # of the current time step: a resumed ramp makes the same increments
         check_stable(f"the tilt from {from_deg} to {to_deg} deg")
         if on_chunk and O.time - last_report >= 0.02:
             on_chunk()
@@ -149,8 +150,7 @@ def run_arrest(watched: Sequence[Sequence[int]], floor: float, criteria: StageCr
     failure; now by default) that took. None if the slope still moves ``arrest_time`` seconds
     after the failure: it collapses. The parts still on the table are taken anew every chunk,
     so a piece is judged until it drops below ``floor``."""
-    if arrest_time <= 0:
-        raise ValueError(f"arrest_time = {arrest_time} is invalid: it must be > 0 s")
+    require("arrest_time", arrest_time, "(0, inf)")
     start = O.time if start is None else start
     while O.time - start < arrest_time:
         if fastest_speed(on_table(watched, floor), criteria.chunk, on_chunk) < criteria.rest_speed:

@@ -14,7 +14,7 @@ from yade.wrapper import JointSetGeometry, ParallelBondMat, SmoothJointMat
 
 from toppling.build import bonding, engines, geometry, joints, packing
 from toppling.build.discs import disc
-from toppling.run.steps import run_steps
+from toppling.run.steps import run_steps, steps_in
 
 
 @dataclass
@@ -63,7 +63,7 @@ def build(b: float, h: float, rmin: float, rmax: float, rock: dict, joint_fricti
 def settle(seconds: float, damping: float = 0.5) -> None:
     """Run ``seconds`` with NewtonIntegrator's local damping, then switch it off again."""
     engines.set_local_damping(damping)
-    run_steps(max(1, int(seconds / O.dt)))
+    run_steps(steps_in(seconds))
     engines.set_local_damping(0.0)
 
 

@@ -5,6 +5,7 @@ from yade import O
 from yade.wrapper import Law2_ScGeom_ParallelBondPhys_ParallelBond, Law2_ScGeom_SmoothJointPhys_SmoothJoint
 
 from toppling.build.engines import functor
+from toppling.checks import require
 
 
 def run_steps(steps: int) -> None:
@@ -13,14 +14,24 @@ def run_steps(steps: int) -> None:
     ``O.run(steps, True)`` runs them in YADE's worker thread and polls every 40 ms for the end:
     a run of a few dozen steps (a tilt increment, ~1 ms of work) took 40 ms of wall time.
     """
+    require("steps", steps, "[0, inf)")
     O.stopAtIter = O.iter + steps
     while O.iter < O.stopAtIter:  # a law stopping the run sets O.stopAtIter to the next iteration
         O.step()
 
 
+def steps_in(seconds: float) -> int:
+    """The number of time steps (at least one) in ``seconds`` of simulated time."""
+    require("seconds", seconds, "(0, inf)")
+    if not 0 < O.dt < float("inf"):  # a loop waiting for simulated time would wait for ever
+        raise RuntimeError(f"O.dt = {O.dt}: the time step must be > 0 s; is there a stiffness (a contact, a bond) for "
+                           "the time stepper to work from, or did the run go unstable?")
+    return max(1, int(seconds / O.dt))
+
+
 def run_checked(seconds: float, what: str = "the run") -> None:
     """Run ``seconds`` of simulated time (at least one step), then check_stable(what)."""
-    run_steps(max(1, int(seconds / O.dt)))
+    run_steps(steps_in(seconds))
     check_stable(what)
 
 

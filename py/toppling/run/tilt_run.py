@@ -2,8 +2,9 @@
 table, gravity turns slowly to the start tilt, then by a step per stage until a stage fails;
 the failure may come to rest and the tilting go on; after the failure the run goes on so that
 the failure surface develops. The run is checkpointed after every stage and every
-``checkpoint_every`` wall seconds, and a run made from its checkpoint continues in the phase it
-stopped in (level, ramp, stage, arrest, post, analysis)."""
+``checkpoint_every`` wall seconds (at the next aligned chunk), and a run made from its
+checkpoint continues in the phase it stopped in (level, ramp, stage, arrest, post, analysis)
+as the run that never stopped would have."""
 from __future__ import annotations
 
 from dataclasses import dataclass, fields
@@ -14,6 +15,7 @@ from yade import O
 
 from toppling.analyse import failure
 from toppling.build import bonding, columns, engines
+from toppling.checks import require
 from toppling.io import paraview
 from toppling.load import tilting
 from toppling.run.steps import run_checked
@@ -22,7 +24,8 @@ from toppling.run.monitoring import MonitoringPoints
 from toppling.run.progress import Progress
 
 # parameters that may change between a run and its continuation
-FREE = ("resume", "checkpoint_every", "max_tilt", "post_failure_time")
+FREE = ("resume", "checkpoint_every", "max_tilt", "post_failure_time", "max_wall_time")
+ALIGN_EVERY = 10  # chunks between alignments (Checkpoint.align; measured: 0.3 s per 6,000 discs, ~1 % of the run)
 
 
 @dataclass
@@ -32,7 +35,10 @@ class TiltProtocol:
     ``max_tilt``. ``settle_damping``: NewtonIntegrator's local damping on the level table,
     ``damping`` while it tilts. ``arrest_time`` [s]: a failure that comes to rest within it is
     not the slope's and the tilt goes on (0: the first failing stage is the failure).
-    ``post_failure_time`` [s]: the run after the failure. ``checkpoint_every`` [wall s]."""
+    ``post_failure_time`` [s]: the run after the failure. ``checkpoint_every`` [wall s].
+    ``max_wall_time`` [wall s, over every run of one out folder]: the run stops there, saved,
+    with the reason in its summary, and the same command with a larger one continues it (0: no
+    limit; every phase also ends at its simulated time limit)."""
     start_tilt: float
     step: float
     max_tilt: float
@@ -43,23 +49,17 @@ class TiltProtocol:
     arrest_time: float
     post_failure_time: float
     checkpoint_every: float
+    max_wall_time: float = 0.0
 
     def __post_init__(self):
-        if self.checkpoint_every <= 0:
-            raise ValueError(f"checkpoint_every = {self.checkpoint_every} is invalid: it must be > 0 (wall seconds)")
-        if not (0 <= self.start_tilt <= self.max_tilt < 90 and self.step > 0 and self.tilt_rate > 0):
-            raise ValueError(f"start_tilt = {self.start_tilt}, max_tilt = {self.max_tilt}, step = {self.step}, "
-                             f"tilt_rate = {self.tilt_rate} are invalid: they need 0 <= start_tilt <= max_tilt < 90 "
-                             "deg, step > 0 deg and tilt_rate > 0 deg/s")
+        require("start_tilt", self.start_tilt, "[0, 90)")
+        require("max_tilt", self.max_tilt, f"[{self.start_tilt}, 90)")  # start_tilt <= max_tilt
+        for name in ("step", "tilt_rate", "checkpoint_every"):
+            require(name, getattr(self, name), "(0, inf)")
+        for name in ("stage_rate", "arrest_time", "post_failure_time", "max_wall_time"):  # 0: at once, none, none, none
+            require(name, getattr(self, name), "[0, inf)")
         engines.check_damping(self.damping, "damping")
         engines.check_damping(self.settle_damping, "settle_damping")
-        if self.arrest_time < 0:
-            raise ValueError(f"arrest_time = {self.arrest_time} is invalid: it must be 0 (the first failing stage is "
-                             "the failure) or > 0 s")
-        if self.stage_rate < 0:
-            raise ValueError(f"stage_rate = {self.stage_rate} is invalid: it must be 0 (each step at once) or > 0 deg/s")
-        if self.post_failure_time < 0:
-            raise ValueError(f"post_failure_time = {self.post_failure_time} is invalid: it must be >= 0 s")
 
     @classmethod
     def from_params(cls, params: Any) -> "TiltProtocol":
@@ -74,12 +74,18 @@ def fresh_state(inputs: dict[str, Any], layout: columns.ColumnLayout, ids: list[
     built = tilting.positions(ids).tolist()  # the pictures' reference; "reference" moves with each equilibrium
     return {"inputs": inputs, "layout": vars(layout), "ids": ids, "built": built, "watched": list(bands.values()),
             "watched_columns": list(bands), "tilt": start_tilt, "failure_tilt": None, "reference": list(built),
-            "stages": [], "energy": []}
+            "stages": [], "energy": [], "chunks": 0}
+
+
+class Stopped(Exception):
+    """The run reached max_wall_time; the message says where and how to go on."""
 
 
 def stage_line(stage: dict) -> str:
     """The log line of a finished stage (the ones `grep '^tilt'` finds)."""
     how = f" by {stage['failed_by']}" if "failed_by" in stage else ""
+    if stage["outcome"] == "equilibrium" and stage.get("at_time_limit"):
+        how = " at max_stage_time (still moving, but less than rest_speed over the stage)"
     gone = stage.get("gone", [])
     alone = f"; {', '.join(gone)} toppled off alone" if stage["outcome"] == "equilibrium" and gone else ""
     return f"tilt {stage['tilt']:.1f} deg: {stage['outcome']}{how} (a column top moved {stage['moved_mm']:.1f} mm{alone})"
@@ -183,12 +189,19 @@ class TiltRun:
         return tilting.kinetic_energy_above(self.ids, self.off_table)
 
     def save_checkpoint(self) -> None:
+        """Save the run, aligned (Checkpoint.align) so that it resumes bit for bit; called at
+        moments every run of the same inputs passes: a phase's end, an aligned chunk."""
+        self.checkpoint.align()
         state = self.state
         state["points"], state["series"], state["wall_time"] = self.points.as_dict(), self.series.state(), self.wall_time()
         self.checkpoint.save(state)
         self.last_save = self.progress.wall_time
 
     def on_chunk(self) -> None:
+        self.state["chunks"] += 1
+        aligned = self.state["chunks"] % ALIGN_EVERY == 0
+        if aligned:  # where a checkpoint may be saved: a run resumed from it goes on as this one does
+            self.checkpoint.align()
         self.points.record()
         self.state["energy"].append((O.time, tilting.current_tilt(), self.slope_energy()))  # the ramp shows as one
         phase, p = self.state["phase"], self.protocol
@@ -203,8 +216,13 @@ class TiltRun:
                 bound = max(0.0, self.criteria.max_stage_time - (O.time - phase["start"]))
             self.progress(f"tilt {tilting.current_tilt():.1f} deg",
                           (self.state["tilt"] - p.start_tilt) / span if span > 0 else None, stage_bound=bound)
-        if self.progress.wall_time - self.last_save > p.checkpoint_every:  # a stage of a fine packing runs for hours
+        if aligned and self.progress.wall_time - self.last_save > p.checkpoint_every:  # a stage may run for hours
             self.save_checkpoint()
+        if aligned and 0 < p.max_wall_time < self.wall_time():
+            self.save_checkpoint()
+            raise Stopped(f"max_wall_time = {p.max_wall_time:g} s reached in the {self.state['phase']['name']} phase at "
+                          f"{tilting.current_tilt():.1f} deg: run the same command with a larger max_wall_time (0: no "
+                          "limit) to continue")
 
     def begin(self, name: str, start: Optional[float] = None, **extra) -> dict:
         """Enter a phase of the run; the checkpoint records it and when it began (now by
@@ -279,6 +297,7 @@ class TiltRun:
         judged = ~off if outcome == "equilibrium" else np.ones_like(off)  # a column gone off the table does not count
         moved = float(np.linalg.norm(now - reference, axis=1)[judged].max(initial=0.0))
         stage = {"tilt": state["tilt"], "outcome": outcome, "time": O.time, "steps": O.iter,
+                 "at_time_limit": O.time - phase["start"] > self.criteria.max_stage_time,
                  "moved_mm": 1e3 * moved,  # a local collapse that came to rest shows here
                  "gone": [c for c, gone in zip(self.watched_columns, off) if gone]}
         if outcome == "failed":  # a collapse or a creep: whoever weighs the failure tilt needs to know which
@@ -309,7 +328,17 @@ class TiltRun:
     def run(self) -> Optional[float]:
         """Stand on the level table, tilt to start_tilt, then in stages until a stage fails
         (then run post_failure_time after the failure) or max_tilt stands. Returns the failure
-        tilt [deg], None if the slope stood up to max_tilt."""
+        tilt [deg], None if the slope stood up to max_tilt or the run stopped at max_wall_time
+        (``state["stopped"]`` says where)."""
+        self.state.pop("stopped", None)
+        try:
+            return self.run_phases()
+        except Stopped as stop:
+            self.state["stopped"] = str(stop)
+            print(f"stopped: {stop}", flush=True)
+            return None
+
+    def run_phases(self) -> Optional[float]:
         state, p = self.state, self.protocol
         for done in state["stages"]:  # a resumed run's log (yade-batch overwrites it) still lists every stage
             print(stage_line(done), flush=True)
@@ -320,7 +349,9 @@ class TiltRun:
             engines.set_local_damping(p.settle_damping)
             if self.run_stage(0.0, phase) == "failed":
                 raise RuntimeError("the model does not stand on the level table: check the outline and the joints")
-            print(f"level table: equilibrium after {O.time - phase['start']:.3f} s", flush=True)
+            limit = " (at max_stage_time: still moving, but less than rest_speed)" \
+                if O.time - phase["start"] > self.criteria.max_stage_time else ""
+            print(f"level table: equilibrium after {O.time - phase['start']:.3f} s{limit}", flush=True)
             state["breaks_before_stages"] = {"level": engines.broken_bonds()}
             phase = self.begin("ramp")
         engines.set_local_damping(p.damping)  # from here on the loading's, also in a resumed run
@@ -372,7 +403,8 @@ class TiltRun:
         keys = ("tilt", "came_to_rest_after_s", "left_table", "discs_off_table", "breaks", "moved_mm", "phi_deg",
                 "s_over_h", "t_over_h")
         arrested = [{key: stage.get(key) for key in keys} for stage in failed if stage.get("came_to_rest_after_s")]
-        return dict(first_failure_tilt_deg=failed[0]["tilt"] if failed else None, arrested_failures=arrested,
+        return dict(stopped=self.state.get("stopped"),
+                    first_failure_tilt_deg=failed[0]["tilt"] if failed else None, arrested_failures=arrested,
                     breaks_before_stages=self.state.get("breaks_before_stages"),
                     tensile_breaks=modes.count(2), shear_breaks=modes.count(3), discs=len(self.ids),
                     stages=self.state["stages"], steps=O.iter, simulated_time=O.time, wall_time=self.wall_time())
