@@ -1,12 +1,14 @@
-"""Benchmark: our parallel-bond law against YADE's JCFpm and Cundall-Strack on one packing.
+"""Benchmark: our parallel-bond law on the disc path and on YADE's generic loop, against YADE's
+JCFpm and Cundall-Strack, on one packing.
 
 Builds one bonded 2D packing (triangular lattice of ~20 000 discs with radii jittered by
 up to 10 %, bottom row fixed, gravity) and times, in the same YADE process and on the same
-discs, the step with each law: µs per step and ns per interaction-step. Run it through the
-launcher; it re-runs itself with 1 and 2 threads and prints a Markdown table:
+discs, the step with each: µs per step and ns per interaction-step. Run it through the
+launcher; it re-runs itself with 1 and 2 threads, prints a Markdown table and, last, one JSON
+line {"fast_1": ns, "fast_2": ns, "generic_1": ns, ...} (ns per interaction-step):
 
-    ./yade -x -n scripts/benchmark_laws.py            # all thread counts
-    ./yade -x -n -j2 scripts/benchmark_laws.py worker # one thread count, JSON on stdout
+    ./yade -x -n benchmarks/laws.py            # all thread counts
+    ./yade -x -n -j2 benchmarks/laws.py worker # one thread count, JSON on stdout
 """
 import json
 import math
@@ -29,13 +31,16 @@ def lattice(seed=1):
             yield (2 * R * i + (R if j % 2 else 0), math.sqrt(3) * R * j, R * rng.uniform(0.9, 1.0) + 1e-9 * R, j == 0)
 
 
+LAWS = ("fast", "generic", "JCFpm", "CundallStrack")  # fast, generic: the parallel-bond law on each loop
+
+
 def build(law_name):
     from yade import O, utils
     from yade import wrapper as w
     from toppling.build import bonding, discs
 
     O.reset()
-    if law_name == "ParallelBond":
+    if law_name in ("fast", "generic"):
         mat = w.ParallelBondMat(young=1e9, density=2700, bondYoung=1e9, frictionAngle=0.5)
         ip2, law2 = w.Ip2_ParallelBondMat_ParallelBondMat_ParallelBondPhys(), w.Law2_ScGeom_ParallelBondPhys_ParallelBond()
     elif law_name == "JCFpm":
@@ -55,10 +60,11 @@ def build(law_name):
     factor = 1.2 if law_name == "JCFpm" else 1.0  # JCFpm bonds what it detects at step 0
     bo1, ig2 = w.Bo1_Sphere_Aabb(aabbEnlargeFactor=factor), w.Ig2_Sphere_Sphere_ScGeom(interactionDetectionFactor=factor)
     # Each law runs at its own stable time step (GlobalStiffnessTimeStepper), as a user would.
-    O.engines = [w.ForceResetter(), w.InsertionSortCollider([bo1]), w.InteractionLoop([ig2], [ip2], [law2]),
+    loop = w.DiscInteractionLoop if law_name == "fast" else w.InteractionLoop
+    O.engines = [w.ForceResetter(), w.InsertionSortCollider([bo1]), loop([ig2], [ip2], [law2]),
                  w.GlobalStiffnessTimeStepper(timestepSafetyCoefficient=0.5, timeStepUpdateInterval=100),
                  w.NewtonIntegrator(gravity=(0, -9.81, 0), damping=0.1)]
-    if law_name == "ParallelBond":
+    if law_name in ("fast", "generic"):
         bonding.bond_within_gap(gap=0.25 * R)
     O.run(1, True)
     bo1.aabbEnlargeFactor = ig2.interactionDetectionFactor = 1.0
@@ -83,7 +89,7 @@ def measure(law_name):
 def worker():
     from yade import O
     threads = O.numThreads if hasattr(O, "numThreads") else int(os.environ.get("OMP_NUM_THREADS", "1"))
-    rows = [dict(measure(name), threads=threads) for name in ("ParallelBond", "JCFpm", "CundallStrack")]
+    rows = [dict(measure(name), threads=threads) for name in LAWS]
     print("BENCHMARK-JSON " + json.dumps(rows))
 
 
@@ -106,6 +112,8 @@ def main():
         jcfpm = next(x for x in rows if x["law"] == "JCFpm" and x["threads"] == r["threads"])
         print(f"| {r['law']} | {r['threads']} | {r['discs']} | {r['interactions']} | {r['us_per_step']:.0f} | "
               f"{r['ns_per_interaction_step']:.0f} | {r['ns_per_interaction_step'] / jcfpm['ns_per_interaction_step']:.2f} |")
+    print(json.dumps({f"{r['law'].lower()}_{r['threads']}": round(r["ns_per_interaction_step"], 1) for r in rows
+                      if r["law"] != "CundallStrack"}))
 
 
 if __name__ == "__main__":

@@ -5,7 +5,7 @@ import math
 from typing import Sequence
 
 from yade import O
-from yade.wrapper import (Bo1_Box_Aabb, Bo1_Sphere_Aabb, Bo1_Wall_Aabb, ForceResetter,
+from yade.wrapper import (Bo1_Box_Aabb, Bo1_Sphere_Aabb, Bo1_Wall_Aabb, DiscInteractionLoop, ForceResetter,
                           GlobalStiffnessTimeStepper, Ig2_Box_Sphere_ScGeom,
                           Ig2_Sphere_Sphere_ScGeom, Ig2_Wall_Sphere_ScGeom,
                           InsertionSortCollider, InteractionLoop,
@@ -20,18 +20,20 @@ G = 9.81  # [m/s2]
 
 
 def engines(gravity=(0.0, -G, 0.0), local_damping: float = 0.0,
-            timestepper: bool = True, safety: float = 0.5, extra: Sequence = ()) -> list:
+            timestepper: bool = True, safety: float = 0.5, extra: Sequence = (), fast: bool = True) -> list:
     """The engine list of a bonded-disc scene: collider, parallel-bond and smooth-joint laws, Newton.
 
     ``local_damping`` is NewtonIntegrator's non-viscous damping (PFC's local damping);
-    ``timestepper`` adds GlobalStiffnessTimeStepper, which sees bond stiffness.
+    ``timestepper`` adds GlobalStiffnessTimeStepper, which sees bond stiffness. ``fast``: the
+    disc path (DiscInteractionLoop), else YADE's generic InteractionLoop (the same results).
     """
     check_damping(local_damping)
     check_safety(safety)
+    loop_class = DiscInteractionLoop if fast else InteractionLoop
     loop = [
         ForceResetter(),
         InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Wall_Aabb(), Bo1_Box_Aabb()]),
-        InteractionLoop(
+        loop_class(
             [Ig2_Sphere_Sphere_ScGeom(), Ig2_Wall_Sphere_ScGeom(), Ig2_Box_Sphere_ScGeom()],
             [Ip2_ParallelBondMat_ParallelBondMat_ParallelBondPhys()],
             [Law2_ScGeom_ParallelBondPhys_ParallelBond(), Law2_ScGeom_SmoothJointPhys_SmoothJoint()]),
@@ -85,6 +87,17 @@ def limit_timestep() -> None:
     stepper.defaultDt = dt  # used while nothing carries force (e.g. the first step)
     stepper.previousDt = min(stepper.previousDt, dt)
     O.dt = min(O.dt, dt) if O.iter > 0 else dt
+
+
+def set_fast(fast: bool) -> None:
+    """Run the scene on the disc path (DiscInteractionLoop) or on YADE's generic InteractionLoop,
+    with the same functors."""
+    for k, engine in enumerate(O.engines):
+        if isinstance(engine, InteractionLoop):
+            functors = [getattr(engine, d).functors for d in ("geomDispatcher", "physDispatcher", "lawDispatcher")]
+            O.engines = O.engines[:k] + [(DiscInteractionLoop if fast else InteractionLoop)(*functors)] + O.engines[k + 1:]
+            return
+    raise LookupError("no InteractionLoop in O.engines; build them with toppling.build.engines.engines()")
 
 
 def functor(cls, dispatcher: str = "lawDispatcher"):

@@ -1,0 +1,34 @@
+// The interaction loop of a disc scene without YADE's generic machinery where it is not needed:
+// the geometry of a touching disc pair is updated inline (the same arithmetic as
+// Ig2_Sphere_Sphere_ScGeom) and its law is called directly. Everything else (new contacts,
+// walls, boxes) goes through the dispatchers as in InteractionLoop, of which this is a drop-in
+// subclass.
+#pragma once
+
+#include <core/InteractionLoop.hpp>
+#include <pkg/dem/Ig2_Sphere_Sphere_ScGeom.hpp>
+
+namespace yade {
+
+class DiscInteractionLoop : public InteractionLoop {
+public:
+	void action() override;
+	// clang-format off
+	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(DiscInteractionLoop, InteractionLoop,
+		"An :yref:`InteractionLoop` for discs (spheres moving in the xy-plane): a touching pair of spheres has its "
+		":yref:`ScGeom` updated inline and its law called without dispatch; results equal InteractionLoop's (one "
+		"thread: bit for bit). Periodic scenes, callbacks and sorted loops run as in InteractionLoop. Constructed "
+		"as InteractionLoop, from three lists of functors.",
+		/*attrs*/,
+		/*ctor*/,
+		/*py*/
+	);
+	// clang-format on
+
+private:
+	bool dispatched(const shared_ptr<Interaction>& I, const shared_ptr<Body>& b1, const shared_ptr<Body>& b2);
+	void updateDiscPair(const shared_ptr<Interaction>& I, const Body& b1, const Body& b2, bool avoidGranularRatcheting) const;
+};
+REGISTER_SERIALIZABLE(DiscInteractionLoop);
+
+} // namespace yade
