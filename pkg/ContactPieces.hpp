@@ -95,6 +95,24 @@ namespace toppling {
 	}
 
 	// Elastic energy of a linear spring holding force f.
+	// The turn of the contact frame over one step, as ScGeom::precompute forms it from the
+	// normals before and now and the pair's mean spin about the normal: a shear force carried
+	// over from the last step is turned with turn(); the same arithmetic as ScGeom::rotate.
+	struct FrameTurn {
+		Vector3r tilt, twist;
+		FrameTurn(const Vector3r& before, const Vector3r& now, const Vector3r& spin1, const Vector3r& spin2, Real dt)
+		        : tilt(before.cross(now))
+		        , twist((dt * 0.5 * before.dot(spin1 + spin2)) * before)
+		{
+		}
+		Vector3r& turn(Vector3r& shear) const
+		{
+			shear -= shear.cross(tilt);
+			shear -= shear.cross(twist);
+			return shear;
+		}
+	};
+
 	inline Real springEnergy(Real f, Real k) { return k > 0 ? 0.5 * f * f / k : 0; }
 
 } // namespace toppling

@@ -21,12 +21,8 @@ void DiscInteractionLoop::action()
 	physDispatcher->updateScenePtr();
 	lawDispatcher->updateScenePtr();
 	shared_ptr<IGeomFunctor> discs; // the pairs whose geometry is updated inline
-	bool                     avoidGranularRatcheting = true;
 	for (const auto& f : geomDispatcher->functors)
-		if (const auto* ig2 = dynamic_cast<Ig2_Sphere_Sphere_ScGeom*>(f.get())) {
-			discs                   = f;
-			avoidGranularRatcheting = ig2->avoidGranularRatcheting;
-		}
+		if (dynamic_cast<Ig2_Sphere_Sphere_ScGeom*>(f.get())) discs = f;
 
 	InteractionContainer& interactions = *scene->interactions;
 	const long            size         = long(interactions.size());
@@ -43,7 +39,7 @@ void DiscInteractionLoop::action()
 		}
 		// an interaction made explicitly (utils.createInteraction) has no law cached yet: dispatched once
 		if (I->isReal() && discs && I->functorCache.geom == discs && I->functorCache.constLaw)
-			updateDiscPair(I, *b1, *b2, avoidGranularRatcheting);
+			updateDiscPair(*I, *b1, *b2);
 		else if (!dispatched(I, b1, b2))
 			continue;
 		if (!I->functorCache.constLaw->go(I->geom, I->phys, I.get())) scene->interactions->requestErase(I);
@@ -51,10 +47,11 @@ void DiscInteractionLoop::action()
 }
 
 // Ig2_Sphere_Sphere_ScGeom::go for an existing, non-periodic contact, in the same order of
-// operations (so that the results are the same to the last bit).
-void DiscInteractionLoop::updateDiscPair(const shared_ptr<Interaction>& I, const Body& b1, const Body& b2, bool avoidGranularRatcheting) const
+// operations (so that the results are the same to the last bit), without ScGeom::precompute's
+// frame turn and shear increment: our laws form their own (toppling::FrameTurn).
+void DiscInteractionLoop::updateDiscPair(Interaction& I, const Body& b1, const Body& b2) const
 {
-	auto&         geom = *static_cast<ScGeom*>(I->geom.get());
+	auto&         geom = *static_cast<ScGeom*>(I.geom.get());
 	const State & s1 = *b1.state, &s2 = *b2.state;
 	const Real    r1 = static_cast<const Sphere*>(b1.shape.get())->radius, r2 = static_cast<const Sphere*>(b2.shape.get())->radius;
 	Vector3r      normal = (s2.se3.position + Vector3r::Zero()) - s1.se3.position;
@@ -65,7 +62,7 @@ void DiscInteractionLoop::updateDiscPair(const shared_ptr<Interaction>& I, const
 	geom.penetrationDepth       = penetrationDepth;
 	geom.radius1                = r1;
 	geom.radius2                = r2;
-	geom.precompute(s1, s2, scene, I, normal, false, Vector3r::Zero(), avoidGranularRatcheting);
+	geom.normal                 = normal;
 }
 
 // InteractionLoop's steps for one interaction (geometry, physics, the law's functor); false when

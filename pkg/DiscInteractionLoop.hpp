@@ -1,6 +1,7 @@
 // The interaction loop of a disc scene without YADE's generic machinery where it is not needed:
 // the geometry of a touching disc pair is updated inline (the same arithmetic as
-// Ig2_Sphere_Sphere_ScGeom) and its law is called directly. Everything else (new contacts,
+// Ig2_Sphere_Sphere_ScGeom, without ScGeom's cached frame turn and shear increment, which our
+// laws do not read) and its law is called directly. Everything else (new contacts,
 // walls, boxes) goes through the dispatchers as in InteractionLoop, of which this is a drop-in
 // subclass.
 #pragma once
@@ -17,8 +18,9 @@ public:
 	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(DiscInteractionLoop, InteractionLoop,
 		"An :yref:`InteractionLoop` for discs (spheres moving in the xy-plane): a touching pair of spheres has its "
 		":yref:`ScGeom` updated inline and its law called without dispatch; results equal InteractionLoop's (one "
-		"thread: bit for bit). Periodic scenes, callbacks and sorted loops run as in InteractionLoop. Constructed "
-		"as InteractionLoop, from three lists of functors.",
+		"thread: bit for bit). Such pairs' :yref:`ScGeom.shearInc` is not updated (the parallel-bond and smooth-joint "
+		"laws form their own shear increment and frame turn). Periodic scenes, callbacks and sorted loops run as in "
+		"InteractionLoop. Constructed as InteractionLoop, from three lists of functors.",
 		/*attrs*/,
 		/*ctor*/,
 		/*py*/
@@ -27,7 +29,7 @@ public:
 
 private:
 	bool dispatched(const shared_ptr<Interaction>& I, const shared_ptr<Body>& b1, const shared_ptr<Body>& b2);
-	void updateDiscPair(const shared_ptr<Interaction>& I, const Body& b1, const Body& b2, bool avoidGranularRatcheting) const;
+	void updateDiscPair(Interaction& I, const Body& b1, const Body& b2) const;
 };
 REGISTER_SERIALIZABLE(DiscInteractionLoop);
 

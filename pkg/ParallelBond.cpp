@@ -100,6 +100,7 @@ void Ip2_ParallelBondMat_ParallelBondMat_ParallelBondPhys::go(
 	// Bond properties are fixed now so that installing a bond later only needs the overlap.
 	const auto* geom = dynamic_cast<const GenericSpheresContact*>(interaction->geom.get());
 	const Real  r1 = geom ? geom->refR1 : 0, r2 = geom ? geom->refR2 : 0;
+	if (geom) phys->normalBefore = geom->normal; // the frame turns from where the contact was made
 	const Real  rMin = (r1 > 0 && r2 > 0) ? math::min(r1, r2) : math::max(r1, r2);
 	if (rMin > 0) {
 		phys->bondRadius  = math::min(mat1->bondRadiusMultiplier, mat2->bondRadiusMultiplier) * rMin;

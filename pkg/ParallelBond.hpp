@@ -85,6 +85,7 @@ public:
 		((Real, bondMoment, 0, , "Bond moment $\\bar M$ about z on body 2 [N·m]."))
 		((Real, bondSigmaMax, 0, , "Largest bond tensile stress $-\\bar F_n/A+|\\bar M|\\bar R/I$ [Pa] (last step)."))
 		((Real, bondTauMax, 0, , "Bond shear stress $|\\bar F_s|/A$ [Pa] (last step)."))
+		((Vector3r, normalBefore, Vector3r::Zero(), , "The contact normal the law saw at the last step: the shear forces turn with the contact from it (as :yref:`ScGeom` turns them)."))
 		,
 		createIndex();
 		,

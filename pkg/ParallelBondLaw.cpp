@@ -26,10 +26,14 @@ bool Law2_ScGeom_ParallelBondPhys_ParallelBond::go(shared_ptr<IGeom>& ig, shared
 	// Shear increment from the contact point's relative velocity (PFC), not ScGeom's radius-based
 	// one: the same lever arms as the torques applied below, so the law does no spurious work.
 	const Vector3r du = toppling::tangential(vRel * scene->dt, n);
+	// The frame turn from the normal this law saw last, not ScGeom's cache: the disc path
+	// (DiscInteractionLoop) updates the geometry without it.
+	const toppling::FrameTurn frame(phys.normalBefore, n, b1.state->angVel, b2.state->angVel, scene->dt);
+	phys.normalBefore = n;
 
 	// Contact: linear springs, no tension, Coulomb slider.
 	if (un > 0) {
-		geom.rotate(phys.contactShearForce);
+		frame.turn(phys.contactShearForce);
 		phys.contactNormalForce = phys.contactKn * un;
 		phys.contactShearForce -= phys.contactKs * du;
 		phys.isSlipping = toppling::coulombSlip(phys.contactShearForce, phys.contactNormalForce * phys.tangensOfFrictionAngle);
@@ -41,7 +45,7 @@ bool Law2_ScGeom_ParallelBondPhys_ParallelBond::go(shared_ptr<IGeom>& ig, shared
 
 	if (phys.isBonded()) {
 		const Real spin = (b2.state->angVel.z() - b1.state->angVel.z()) * scene->dt;
-		if (!updateBond(*I, geom, phys, du, spin) && un < 0) return false;
+		if (!updateBond(*I, geom, phys, frame, du, spin) && un < 0) return false;
 	}
 
 	// Dashpots on the normal relative velocity (positive when separating).
@@ -55,10 +59,11 @@ bool Law2_ScGeom_ParallelBondPhys_ParallelBond::go(shared_ptr<IGeom>& ig, shared
 }
 
 // Advances the bond by one step; false when it broke (the break is recorded).
-bool Law2_ScGeom_ParallelBondPhys_ParallelBond::updateBond(const Interaction& I, ScGeom& geom, ParallelBondPhys& phys, const Vector3r& du, Real spin)
+bool Law2_ScGeom_ParallelBondPhys_ParallelBond::updateBond(
+        const Interaction& I, const ScGeom& geom, ParallelBondPhys& phys, const toppling::FrameTurn& frame, const Vector3r& du, Real spin)
 {
 	const Real A = phys.bondArea, Ib = phys.bondInertia;
-	geom.rotate(phys.bondShearForce);
+	frame.turn(phys.bondShearForce);
 	phys.bondNormalForce = phys.bondKn * A * (geom.penetrationDepth - phys.bondRefOverlap);
 	phys.bondShearForce -= phys.bondKs * A * du;
 	phys.bondMoment -= phys.bondKn * Ib * spin;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "BreakingLaw.hpp"
+#include "ContactPieces.hpp"
 #include "ParallelBond.hpp"
 #include <pkg/dem/ScGeom.hpp>
 
@@ -38,7 +39,8 @@ public:
 	FUNCTOR2D(ScGeom, ParallelBondPhys);
 
 private:
-	bool updateBond(const Interaction& I, ScGeom& geom, ParallelBondPhys& phys, const Vector3r& shearIncrement, Real relativeSpin);
+	bool updateBond(const Interaction& I, const ScGeom& geom, ParallelBondPhys& phys, const toppling::FrameTurn& frame,
+	                const Vector3r& shearIncrement, Real relativeSpin);
 };
 REGISTER_SERIALIZABLE(Law2_ScGeom_ParallelBondPhys_ParallelBond);
 
