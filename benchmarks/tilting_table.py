@@ -8,9 +8,12 @@ discs, interactions, dt, steps per second and simulated seconds per wall hour, w
 
 With ``z_order`` ``both`` it builds the scene twice in the same process, discs in the packer's
 order (``z_order`` 0) and in Z-order (1), times them in turn (0, 1, 0, 1: the machine's load
-drifts alike over both), and prints the speed-up of Z-order over the packer's order.
+drifts alike over both), and prints the speed-up of Z-order over the packer's order. With
+``path`` ``both`` it times one scene, saved after the warm-up, on YADE's generic interaction
+loop and on the disc path in turn (generic, fast, generic, fast), in CPU time, and prints the
+speed-up of the disc path.
 
-    ./yade -x -n -j1 benchmarks/tilting_table.py [rmin rmax [arrangement [joint_stiffness_scale [z_order]]]]
+    ./yade -x -n -j1 benchmarks/tilting_table.py [rmin rmax [arrangement [joint_stiffness_scale [z_order [path]]]]]
 """
 import os
 import sys
@@ -20,6 +23,7 @@ from types import SimpleNamespace
 from yade import O
 
 from examples import params
+from toppling.build import engines
 from toppling.models import tilting_table
 
 WARM_UP, STEPS, REPEATS = 2000, 2000, int(os.environ.get("BENCH_REPEATS", "3"))
@@ -45,6 +49,24 @@ def time_steps() -> dict:
                 rate=rate, per_hour=rate * O.dt * 3600)
 
 
+def compare_paths() -> None:
+    """Time the built scene on the generic loop and on the disc path in turn, from one saved state."""
+    O.run(WARM_UP, True)
+    O.saveTmp("benchmark")
+    rates = {False: [], True: []}
+    for fast in (False, True, False, True):
+        O.loadTmp("benchmark")
+        engines.set_fast(fast)
+        O.run(200, True)  # the collider and the time stepper rebuilt after the load
+        start = time.process_time()
+        O.run(STEPS, True)
+        rates[fast].append(STEPS / (time.process_time() - start))
+        print(f"| {'fast' if fast else 'generic'} | {len(O.bodies)} | {len(O.interactions)} | {O.dt:.2e} | "
+              f"{rates[fast][-1]:.0f} | {rates[fast][-1] * O.dt * 3600:.2f} |", flush=True)
+    print(f"disc path over the generic loop: x{max(rates[True]) / max(rates[False]):.2f} in steps per CPU second "
+          f"(best of each; pairs x{rates[True][0] / rates[False][0]:.2f}, x{rates[True][1] / rates[False][1]:.2f})")
+
+
 def row(r: dict, label: str = "") -> str:
     return f"| {label}{r['discs']} | {r['interactions']} | {r['dt']:.2e} | {r['rate']:.0f} | {r['per_hour']:.2f} |"
 
@@ -55,16 +77,26 @@ def main() -> None:
     arrangement = args[2] if len(args) >= 3 else "ideal"
     scale = float(args[3]) if len(args) >= 4 else 1.0
     order = args[4] if len(args) >= 5 else "1"
+    path = args[5] if len(args) >= 6 else "fast"
     if order not in ("0", "1", "both"):
         raise SystemExit(f"z_order = {order} is invalid: it must be 0, 1 or both")
+    if path not in ("fast", "generic", "both") or (path == "both" and order == "both"):
+        raise SystemExit(f"path = {path} is invalid: it must be fast, generic or both (both with one z_order)")
     print(f"tilting table, {arrangement}, R {1e3 * rmin:g}-{1e3 * rmax:g} mm, joint stiffness x {scale:g}, "
           f"{O.numThreads} thread(s)")
+    if path == "both":
+        print("| path | discs | interactions | dt (s) | steps per CPU s | simulated s per CPU hour |")
+        print("|---|---|---|---|---|---|")
+        build(rmin, rmax, arrangement, scale, int(order))
+        compare_paths()
+        return
     orders = [0, 1, 0, 1] if order == "both" else [int(order)]
     print(f"| {'z_order: ' if order == 'both' else ''}discs | interactions | dt (s) | steps/s | simulated s per wall hour |")
     print("|---|---|---|---|---|")
     rates = {0: [], 1: []}
     for z in orders:
         build(rmin, rmax, arrangement, scale, z)
+        engines.set_fast(path == "fast")
         r = time_steps()
         rates[z].append(r["rate"])
         print(row(r, f"{z}: " if order == "both" else ""), flush=True)

@@ -29,8 +29,21 @@ namespace toppling {
 	// c = 2 beta sqrt(m k).
 	inline Real dashpotCoefficient(Real beta, Real mass, Real k) { return 2 * beta * math::sqrt(mass * k); }
 
+	// What a law reads of a body's motion: a copy of its State's (the disc path gathers them for
+	// every body once per step, contiguous, rather than from every pair's two State objects).
+	struct Kinematics {
+		Vector3r pos, vel, angVel;
+		Kinematics() = default;
+		explicit Kinematics(const State& s)
+		        : pos(s.pos)
+		        , vel(s.vel)
+		        , angVel(s.angVel)
+		{
+		}
+	};
+
 	// Relative velocity of body 2's contact point with respect to body 1's.
-	inline Vector3r relativeVelocity(const State& s1, const State& s2, const Vector3r& contactPoint)
+	inline Vector3r relativeVelocity(const Kinematics& s1, const Kinematics& s2, const Vector3r& contactPoint)
 	{
 		return (s2.vel + s2.angVel.cross(contactPoint - s2.pos)) - (s1.vel + s1.angVel.cross(contactPoint - s1.pos));
 	}
@@ -94,7 +107,6 @@ namespace toppling {
 		forces.addTorque(id2, -(point - pos2).cross(f) + m);
 	}
 
-	// Elastic energy of a linear spring holding force f.
 	// The turn of the contact frame over one step, as ScGeom::precompute forms it from the
 	// normals before and now and the pair's mean spin about the normal: a shear force carried
 	// over from the last step is turned with turn(); the same arithmetic as ScGeom::rotate.
@@ -113,6 +125,7 @@ namespace toppling {
 		}
 	};
 
+	// Elastic energy of a linear spring holding force f.
 	inline Real springEnergy(Real f, Real k) { return k > 0 ? 0.5 * f * f / k : 0; }
 
 } // namespace toppling

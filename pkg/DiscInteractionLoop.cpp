@@ -1,4 +1,6 @@
 #include "DiscInteractionLoop.hpp"
+#include "ParallelBondLaw.hpp"
+#include "SmoothJoint.hpp"
 #include <core/Scene.hpp>
 #include <pkg/common/Sphere.hpp>
 #include <pkg/dem/ScGeom.hpp>
@@ -6,6 +8,15 @@
 namespace yade {
 
 YADE_PLUGIN((DiscInteractionLoop));
+
+namespace {
+	template <class Law> shared_ptr<LawFunctor> lawOf(const LawDispatcher& dispatcher)
+	{
+		for (const auto& f : dispatcher.functors)
+			if (dynamic_cast<Law*>(f.get())) return f;
+		return nullptr;
+	}
+} // namespace
 
 void DiscInteractionLoop::action()
 {
@@ -21,8 +32,15 @@ void DiscInteractionLoop::action()
 	physDispatcher->updateScenePtr();
 	lawDispatcher->updateScenePtr();
 	shared_ptr<IGeomFunctor> discs; // the pairs whose geometry is updated inline
+	Real                     detection = 1;
 	for (const auto& f : geomDispatcher->functors)
-		if (dynamic_cast<Ig2_Sphere_Sphere_ScGeom*>(f.get())) discs = f;
+		if (const auto* ig2 = dynamic_cast<Ig2_Sphere_Sphere_ScGeom*>(f.get())) {
+			discs     = f;
+			detection = ig2->interactionDetectionFactor;
+		}
+	const shared_ptr<LawFunctor> bonds = lawOf<Law2_ScGeom_ParallelBondPhys_ParallelBond>(*lawDispatcher);
+	const shared_ptr<LawFunctor> joints = lawOf<Law2_ScGeom_SmoothJointPhys_SmoothJoint>(*lawDispatcher);
+	gather();
 
 	InteractionContainer& interactions = *scene->interactions;
 	const long            size         = long(interactions.size());
@@ -31,34 +49,73 @@ void DiscInteractionLoop::action()
 #endif
 	for (long i = 0; i < size; i++) {
 		const shared_ptr<Interaction>& I  = interactions[i];
-		const shared_ptr<Body>&        b1 = Body::byId(I->getId1(), scene);
-		const shared_ptr<Body>&        b2 = Body::byId(I->getId2(), scene);
+		const Body::id_t               id1 = I->getId1(), id2 = I->getId2();
+		const shared_ptr<Body>&        b1 = Body::byId(id1, scene);
+		const shared_ptr<Body>&        b2 = Body::byId(id2, scene);
 		if (!b1 || !b2) {
 			scene->interactions->requestErase(I);
 			continue;
 		}
+		const auto& law  = I->functorCache.constLaw;
+		const bool  disc = discs && I->functorCache.geom == discs;
+		if (disc && !I->isReal() && apart(id1, id2, detection)) continue; // Ig2_Sphere_Sphere_ScGeom's first test
 		// an interaction made explicitly (utils.createInteraction) has no law cached yet: dispatched once
-		if (I->isReal() && discs && I->functorCache.geom == discs && I->functorCache.constLaw)
-			updateDiscPair(*I, *b1, *b2);
-		else if (!dispatched(I, b1, b2))
+		if (!(disc && I->isReal() && law)) {
+			if (dispatched(I, b1, b2) && !I->functorCache.constLaw->go(I->geom, I->phys, I.get())) scene->interactions->requestErase(I);
 			continue;
-		if (!I->functorCache.constLaw->go(I->geom, I->phys, I.get())) scene->interactions->requestErase(I);
+		}
+		auto& geom = *static_cast<ScGeom*>(I->geom.get());
+		updateDiscPair(geom, id1, id2);
+		bool keep;
+		if (law == bonds)
+			keep = static_cast<Law2_ScGeom_ParallelBondPhys_ParallelBond*>(law.get())
+			               ->interact(*I, geom, *static_cast<ParallelBondPhys*>(I->phys.get()), motion[id1], motion[id2]);
+		else if (law == joints)
+			keep = static_cast<Law2_ScGeom_SmoothJointPhys_SmoothJoint*>(law.get())
+			               ->interact(*I, geom, *static_cast<SmoothJointPhys*>(I->phys.get()), motion[id1], motion[id2]);
+		else
+			keep = law->go(I->geom, I->phys, I.get());
+		if (!keep) scene->interactions->requestErase(I);
 	}
+}
+
+// Every body's motion and radius (0: not a sphere), in arrays by id: a pair then reads its two
+// bodies from them, not from four scattered objects (Body, State, Shape each).
+void DiscInteractionLoop::gather()
+{
+	auto& bodies = *scene->bodies;
+	motion.resize(bodies.size());
+	radius.assign(bodies.size(), 0);
+	const int sphere = Sphere::getClassIndexStatic();
+	for (const auto& b : bodies) {
+		if (!b) continue;
+		motion[b->id] = toppling::Kinematics(*b->state);
+		const Shape* shape = b->shape.get();
+		if (shape && shape->getClassIndex() == sphere) radius[b->id] = static_cast<const Sphere*>(shape)->radius;
+		else if (const auto* derived = dynamic_cast<const Sphere*>(shape))
+			radius[b->id] = derived->radius;
+	}
+}
+
+// Whether two spheres are too far apart for a contact (Ig2_Sphere_Sphere_ScGeom's test for a new one).
+bool DiscInteractionLoop::apart(Body::id_t id1, Body::id_t id2, Real detection) const
+{
+	const Vector3r d = (motion[id2].pos + Vector3r::Zero()) - motion[id1].pos;
+	return math::pow(detection * (radius[id1] + radius[id2]), 2) - d.squaredNorm() < 0;
 }
 
 // Ig2_Sphere_Sphere_ScGeom::go for an existing, non-periodic contact, in the same order of
 // operations (so that the results are the same to the last bit), without ScGeom::precompute's
 // frame turn and shear increment: our laws form their own (toppling::FrameTurn).
-void DiscInteractionLoop::updateDiscPair(Interaction& I, const Body& b1, const Body& b2) const
+void DiscInteractionLoop::updateDiscPair(ScGeom& geom, Body::id_t id1, Body::id_t id2) const
 {
-	auto&         geom = *static_cast<ScGeom*>(I.geom.get());
-	const State & s1 = *b1.state, &s2 = *b2.state;
-	const Real    r1 = static_cast<const Sphere*>(b1.shape.get())->radius, r2 = static_cast<const Sphere*>(b2.shape.get())->radius;
-	Vector3r      normal = (s2.se3.position + Vector3r::Zero()) - s1.se3.position;
-	const Real    norm   = normal.norm();
+	const Vector3r& pos1 = motion[id1].pos;
+	const Real      r1 = radius[id1], r2 = radius[id2];
+	Vector3r        normal = (motion[id2].pos + Vector3r::Zero()) - pos1;
+	const Real      norm   = normal.norm();
 	normal /= norm;
 	const Real penetrationDepth = r1 + r2 - norm;
-	geom.contactPoint           = s1.se3.position + (r1 - 0.5 * penetrationDepth) * normal;
+	geom.contactPoint           = pos1 + (r1 - 0.5 * penetrationDepth) * normal;
 	geom.penetrationDepth       = penetrationDepth;
 	geom.radius1                = r1;
 	geom.radius2                = r2;

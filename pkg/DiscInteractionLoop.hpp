@@ -1,13 +1,16 @@
 // The interaction loop of a disc scene without YADE's generic machinery where it is not needed:
-// the geometry of a touching disc pair is updated inline (the same arithmetic as
-// Ig2_Sphere_Sphere_ScGeom, without ScGeom's cached frame turn and shear increment, which our
-// laws do not read) and its law is called directly. Everything else (new contacts,
+// every body's motion is gathered into arrays once per step; the geometry of a touching disc
+// pair is updated inline from them (the same arithmetic as Ig2_Sphere_Sphere_ScGeom, without
+// ScGeom's cached frame turn and shear increment, which our laws do not read) and its law is
+// called directly on them. Everything else (new contacts,
 // walls, boxes) goes through the dispatchers as in InteractionLoop, of which this is a drop-in
 // subclass.
 #pragma once
 
+#include "ContactPieces.hpp"
 #include <core/InteractionLoop.hpp>
 #include <pkg/dem/Ig2_Sphere_Sphere_ScGeom.hpp>
+#include <pkg/dem/ScGeom.hpp>
 
 namespace yade {
 
@@ -28,8 +31,12 @@ public:
 	// clang-format on
 
 private:
-	bool dispatched(const shared_ptr<Interaction>& I, const shared_ptr<Body>& b1, const shared_ptr<Body>& b2);
-	void updateDiscPair(Interaction& I, const Body& b1, const Body& b2) const;
+	std::vector<toppling::Kinematics> motion; // by body id, gathered at the start of each step
+	std::vector<Real>                 radius; // by body id; 0: not a sphere
+	void                              gather();
+	bool                              dispatched(const shared_ptr<Interaction>& I, const shared_ptr<Body>& b1, const shared_ptr<Body>& b2);
+	void                              updateDiscPair(ScGeom& geom, Body::id_t id1, Body::id_t id2) const;
+	bool                              apart(Body::id_t id1, Body::id_t id2, Real detection) const;
 };
 REGISTER_SERIALIZABLE(DiscInteractionLoop);
 

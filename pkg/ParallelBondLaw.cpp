@@ -10,17 +10,20 @@ YADE_PLUGIN((Law2_ScGeom_ParallelBondPhys_ParallelBond));
 
 bool Law2_ScGeom_ParallelBondPhys_ParallelBond::go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip, Interaction* I)
 {
-	auto&      geom = *static_cast<ScGeom*>(ig.get());
-	auto&      phys = *static_cast<ParallelBondPhys*>(ip.get());
-	const Real un   = geom.penetrationDepth;
+	const toppling::Kinematics k1(*Body::byId(I->getId1(), scene)->state), k2(*Body::byId(I->getId2(), scene)->state);
+	return interact(*I, *static_cast<ScGeom*>(ig.get()), *static_cast<ParallelBondPhys*>(ip.get()), k1, k2);
+}
+
+bool Law2_ScGeom_ParallelBondPhys_ParallelBond::interact(
+        const Interaction& I, ScGeom& geom, ParallelBondPhys& phys, const toppling::Kinematics& b1, const toppling::Kinematics& b2)
+{
+	const Real un = geom.penetrationDepth;
 	if (!phys.isBonded() && un < 0) return false;
 
-	const Body&     b1   = *Body::byId(I->getId1(), scene);
-	const Body&     b2   = *Body::byId(I->getId2(), scene);
 	const Vector3r& n    = geom.normal;
-	const Vector3r  vRel = toppling::relativeVelocity(*b1.state, *b2.state, geom.contactPoint);
+	const Vector3r  vRel = toppling::relativeVelocity(b1, b2, geom.contactPoint);
 	if (!toppling::stepIsSmall(vRel, scene->dt, geom.refR1, geom.refR2)) {
-		reportInstability(*I);
+		reportInstability(I);
 		return true;
 	}
 	// Shear increment from the contact point's relative velocity (PFC), not ScGeom's radius-based
@@ -28,7 +31,7 @@ bool Law2_ScGeom_ParallelBondPhys_ParallelBond::go(shared_ptr<IGeom>& ig, shared
 	const Vector3r du = toppling::tangential(vRel * scene->dt, n);
 	// The frame turn from the normal this law saw last, not ScGeom's cache: the disc path
 	// (DiscInteractionLoop) updates the geometry without it.
-	const toppling::FrameTurn frame(phys.normalBefore, n, b1.state->angVel, b2.state->angVel, scene->dt);
+	const toppling::FrameTurn frame(phys.normalBefore, n, b1.angVel, b2.angVel, scene->dt);
 	phys.normalBefore = n;
 
 	// Contact: linear springs, no tension, Coulomb slider.
@@ -44,8 +47,8 @@ bool Law2_ScGeom_ParallelBondPhys_ParallelBond::go(shared_ptr<IGeom>& ig, shared
 	}
 
 	if (phys.isBonded()) {
-		const Real spin = (b2.state->angVel.z() - b1.state->angVel.z()) * scene->dt;
-		if (!updateBond(*I, geom, phys, frame, du, spin) && un < 0) return false;
+		const Real spin = (b2.angVel.z() - b1.angVel.z()) * scene->dt;
+		if (!updateBond(I, geom, phys, frame, du, spin) && un < 0) return false;
 	}
 
 	// Dashpots on the normal relative velocity (positive when separating).
@@ -54,7 +57,7 @@ bool Law2_ScGeom_ParallelBondPhys_ParallelBond::go(shared_ptr<IGeom>& ig, shared
 
 	phys.normalForce = (phys.contactNormalForce + phys.bondNormalForce + dampingFn) * n;
 	phys.shearForce  = phys.contactShearForce + phys.bondShearForce;
-	applyForces(*I, b1.state->pos, b2.state->pos, geom.contactPoint, phys, phys.bondMoment);
+	applyForces(I, b1.pos, b2.pos, geom.contactPoint, phys, phys.bondMoment);
 	return true;
 }
 

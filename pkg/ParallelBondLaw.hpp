@@ -12,6 +12,8 @@ namespace yade {
 class Law2_ScGeom_ParallelBondPhys_ParallelBond : public BreakingLaw {
 public:
 	bool go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip, Interaction* I) override;
+	// go() on the two bodies' kinematics, as given (DiscInteractionLoop gathers them).
+	bool interact(const Interaction& I, ScGeom& geom, ParallelBondPhys& phys, const toppling::Kinematics& b1, const toppling::Kinematics& b2);
 	Real elasticEnergy() const;
 	int  countBonds(int state) const;
 	Real criticalTimeStep() const;

@@ -74,19 +74,22 @@ void Law2_ScGeom_SmoothJointPhys_SmoothJoint::postLoad(Law2_ScGeom_SmoothJointPh
 
 bool Law2_ScGeom_SmoothJointPhys_SmoothJoint::go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip, Interaction* I)
 {
-	auto&       geom = *static_cast<ScGeom*>(ig.get());
-	auto&       phys = *static_cast<SmoothJointPhys*>(ip.get());
-	const Body& b1   = *Body::byId(I->getId1(), scene);
-	const Body& b2   = *Body::byId(I->getId2(), scene);
+	const toppling::Kinematics k1(*Body::byId(I->getId1(), scene)->state), k2(*Body::byId(I->getId2(), scene)->state);
+	return interact(*I, *static_cast<ScGeom*>(ig.get()), *static_cast<SmoothJointPhys*>(ip.get()), k1, k2);
+}
 
-	const Vector3r vRel = toppling::relativeVelocity(*b1.state, *b2.state, geom.contactPoint);
+bool Law2_ScGeom_SmoothJointPhys_SmoothJoint::interact(
+        const Interaction& I, const ScGeom& geom, SmoothJointPhys& phys, const toppling::Kinematics& b1, const toppling::Kinematics& b2)
+{
+	const Vector3r vRel = toppling::relativeVelocity(b1, b2, geom.contactPoint);
 	if (!toppling::stepIsSmall(vRel, scene->dt, geom.refR1, geom.refR2)) {
-		reportInstability(*I);
+		reportInstability(I);
 		return true;
 	}
 	if (!phys.isBonded() && geom.penetrationDepth < phys.releasePenetration) return false; // slid or opened apart
 	Real turn = 0;
-	if (scene->iter % turnInterval == 0 && toppling::pairTurn(b1, b2, *scene, turn)) phys.jointNormal = toppling::rotatedZ(phys.jointNormal0, turn);
+	if (scene->iter % turnInterval == 0 && toppling::pairTurn(*Body::byId(I.getId1(), scene), *Body::byId(I.getId2(), scene), *scene, turn))
+		phys.jointNormal = toppling::rotatedZ(phys.jointNormal0, turn);
 	const Vector3r n  = phys.jointNormal;
 	const Vector3r t  = Vector3r::UnitZ().cross(n);
 	const Vector3r du = vRel * scene->dt;
@@ -99,7 +102,7 @@ bool Law2_ScGeom_SmoothJointPhys_SmoothJoint::go(shared_ptr<IGeom>& ig, shared_p
 		if (const int mode = phys.failureMode(fn, fs)) {
 			phys.jointNormalForce = fn;
 			phys.jointShearForce  = fs;
-			recordBreak(*I, geom.contactPoint, n, 2 * toppling::smallerRadius(geom.refR1, geom.refR2), mode, phys.elasticEnergy());
+			recordBreak(I, geom.contactPoint, n, 2 * toppling::smallerRadius(geom.refR1, geom.refR2), mode, phys.elasticEnergy());
 			phys.bondState = mode;
 		}
 	}
@@ -118,7 +121,7 @@ bool Law2_ScGeom_SmoothJointPhys_SmoothJoint::go(shared_ptr<IGeom>& ig, shared_p
 	phys.jointShearForce  = fs;
 	phys.normalForce      = fn * n;
 	phys.shearForce       = fs * t;
-	applyForces(*I, b1.state->pos, b2.state->pos, geom.contactPoint, phys, 0);
+	applyForces(I, b1.pos, b2.pos, geom.contactPoint, phys, 0);
 	return true;
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "BreakingLaw.hpp"
+#include "ContactPieces.hpp"
 #include <lib/base/AliasNamespaces.hpp>
 #include <core/Material.hpp>
 #include <pkg/dem/FrictPhys.hpp>
@@ -82,6 +83,8 @@ REGISTER_SERIALIZABLE(SmoothJointPhys);
 class Law2_ScGeom_SmoothJointPhys_SmoothJoint : public BreakingLaw {
 public:
 	bool go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip, Interaction* I) override;
+	// go() on the two bodies' kinematics, as given (DiscInteractionLoop gathers them).
+	bool interact(const Interaction& I, const ScGeom& geom, SmoothJointPhys& phys, const toppling::Kinematics& b1, const toppling::Kinematics& b2);
 	void postLoad(Law2_ScGeom_SmoothJointPhys_SmoothJoint&);
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(Law2_ScGeom_SmoothJointPhys_SmoothJoint, BreakingLaw,
