@@ -30,7 +30,9 @@ void BreakingLaw::applyForces(
 		reportInstability(I);
 		return;
 	}
-	toppling::applyContact(scene->forces, I.getId1(), pos1, I.getId2(), pos2, contactPoint, f, Vector3r(0, 0, couple));
+	if (sums) toppling::applyContact(*sums, I.getId1(), pos1, I.getId2(), pos2, contactPoint, f, Vector3r(0, 0, couple));
+	else
+		toppling::applyContact(scene->forces, I.getId1(), pos1, I.getId2(), pos2, contactPoint, f, Vector3r(0, 0, couple));
 }
 
 void BreakingLaw::reportInstability(const Interaction& I)

@@ -2,6 +2,7 @@
 // instability. The parallel-bond and the smooth-joint laws derive from it.
 #pragma once
 
+#include "ContactPieces.hpp"
 #include <lib/base/AliasNamespaces.hpp>
 #include <core/Dispatching.hpp>
 #include <pkg/common/NormShearPhys.hpp>
@@ -18,6 +19,7 @@ public:
 	// contact point and a couple about z on body 2; a non-finite force stops the run instead.
 	void
 	applyForces(const Interaction& I, const Vector3r& pos1, const Vector3r& pos2, const Vector3r& contactPoint, const NormShearPhys& phys, Real couple);
+	toppling::ForceSums* sums = nullptr; // set by DiscInteractionLoop during its loop: the forces go there, not to O.forces
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS(BreakingLaw, LawFunctor,
 		"Base of the toppling laws: keeps one record per broken bond (time, position, normal, size, mode, released "

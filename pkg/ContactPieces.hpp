@@ -7,6 +7,9 @@
 #include <core/Body.hpp>
 #include <core/ForceContainer.hpp>
 #include <core/State.hpp>
+#ifdef YADE_OPENMP
+#include <omp.h>
+#endif
 
 namespace yade {
 namespace toppling {
@@ -88,11 +91,50 @@ namespace toppling {
 		return slip;
 	}
 
+	// Forces and torques summed per thread and body during one interaction loop, then added to
+	// YADE's ForceContainer once per body: its every add writes a flag shared by all threads.
+	// Summed in the order the laws add them, from zero, the totals are those the container would
+	// hold (it starts each step at zero and sums its per-thread buffers the same way).
+	class ForceSums {
+	public:
+		void reset(int threads, size_t bodies)
+		{
+			force.resize(threads);
+			torque.resize(threads);
+			for (int t = 0; t < threads; ++t) {
+				force[t].assign(bodies, Vector3r::Zero());
+				torque[t].assign(bodies, Vector3r::Zero());
+			}
+		}
+		void addForce(Body::id_t id, const Vector3r& f) { force[thread()][id] += f; }
+		void addTorque(Body::id_t id, const Vector3r& t) { torque[thread()][id] += t; }
+		void addTo(ForceContainer& forces) const
+		{
+			for (size_t t = 0; t < force.size(); ++t)
+				for (size_t id = 0; id < force[t].size(); ++id) {
+					forces.addForce(Body::id_t(id), force[t][id]);
+					forces.addTorque(Body::id_t(id), torque[t][id]);
+				}
+		}
+
+	private:
+		std::vector<std::vector<Vector3r>> force, torque;
+		static int                         thread()
+		{
+#ifdef YADE_OPENMP
+			return omp_get_thread_num();
+#else
+			return 0;
+#endif
+		}
+	};
+
 	// Applies force f on body 1 (-f on body 2) at the contact point and a couple m on body 2 (-m on
 	// body 1), with one addForce and one addTorque per body: every call writes a flag shared by
 	// all threads in YADE's ForceContainer, so fewer calls scale better.
+	template <class Forces>
 	inline void applyContact(
-	        ForceContainer& forces,
+	        Forces&         forces,
 	        Body::id_t      id1,
 	        const Vector3r& pos1,
 	        Body::id_t      id2,

@@ -10,6 +10,22 @@ namespace yade {
 YADE_PLUGIN((DiscInteractionLoop));
 
 namespace {
+	// Our laws add to `sums` while it lives (also if the loop throws).
+	struct SumsInUse {
+		std::vector<shared_ptr<LawFunctor>> laws;
+		SumsInUse(std::vector<shared_ptr<LawFunctor>> laws_, toppling::ForceSums* sums)
+		        : laws(std::move(laws_))
+		{
+			set(sums);
+		}
+		~SumsInUse() { set(nullptr); }
+		void set(toppling::ForceSums* sums) const
+		{
+			for (const auto& law : laws)
+				if (law) static_cast<BreakingLaw*>(law.get())->sums = sums;
+		}
+	};
+
 	template <class Law> shared_ptr<LawFunctor> lawOf(const LawDispatcher& dispatcher)
 	{
 		for (const auto& f : dispatcher.functors)
@@ -41,6 +57,12 @@ void DiscInteractionLoop::action()
 	const shared_ptr<LawFunctor> bonds = lawOf<Law2_ScGeom_ParallelBondPhys_ParallelBond>(*lawDispatcher);
 	const shared_ptr<LawFunctor> joints = lawOf<Law2_ScGeom_SmoothJointPhys_SmoothJoint>(*lawDispatcher);
 	gather();
+#ifdef YADE_OPENMP
+	sums.reset(ompThreads > 0 ? std::min(ompThreads, omp_get_max_threads()) : omp_get_max_threads(), motion.size());
+#else
+	sums.reset(1, motion.size());
+#endif
+	const SumsInUse inUse({ bonds, joints }, &sums);
 
 	InteractionContainer& interactions = *scene->interactions;
 	const long            size         = long(interactions.size());
@@ -77,6 +99,7 @@ void DiscInteractionLoop::action()
 			keep = law->go(I->geom, I->phys, I.get());
 		if (!keep) scene->interactions->requestErase(I);
 	}
+	sums.addTo(scene->forces);
 }
 
 // Every body's motion and radius (0: not a sphere), in arrays by id: a pair then reads its two

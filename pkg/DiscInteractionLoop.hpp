@@ -33,6 +33,7 @@ public:
 private:
 	std::vector<toppling::Kinematics> motion; // by body id, gathered at the start of each step
 	std::vector<Real>                 radius; // by body id; 0: not a sphere
+	toppling::ForceSums               sums;   // what the laws add during the loop
 	void                              gather();
 	bool                              dispatched(const shared_ptr<Interaction>& I, const shared_ptr<Body>& b1, const shared_ptr<Body>& b2);
 	void                              updateDiscPair(ScGeom& geom, Body::id_t id1, Body::id_t id2) const;
