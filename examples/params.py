@@ -80,4 +80,4 @@ TILTING_TABLE_IDEAL = dict(
     start_tilt=26.0, step=2.0, max_tilt=45.0, tilt_rate=50.0, stage_rate=10.0,  # deg, deg, deg, deg/s, deg/s
     chunk=0.02, rest_speed=1e-3, fail_displacement=0.05, max_stage_time=2.0, fail_columns=2,  # s, m/s, m, s, -
     arrest_time=0.0, post_failure_time=0.3, resume=-1, checkpoint_every=600.0,  # s, s, -, wall s
-    max_wall_time=0.0)  # wall s (0: no limit)
+    max_wall_time=0.0, exact_resume=0)  # wall s (0: no limit), 1: resumed runs bit for bit (slower)

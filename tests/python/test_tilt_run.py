@@ -219,7 +219,7 @@ def test_a_fresh_run_refuses_more_fail_columns_than_it_watches(empty_scene, tmp_
 def test_a_run_stopped_at_max_wall_time_says_why_and_the_same_command_continues_it(empty_scene, tmp_path, capsys):
     stopped = fresh_run(tmp_path, protocol(max_wall_time=1e-3))
     assert stopped.run() is None
-    assert re.fullmatch(r"max_wall_time = 0.001 s reached in the ramp phase at \d+\.\d deg: run the same command "
+    assert re.fullmatch(r"max_wall_time = 0.001 s reached in the level phase at \d+\.\d deg: run the same command "
                         r"with a larger max_wall_time \(0: no limit\) to continue", stopped.state["stopped"])
     tilt_report.report(stopped, str(tmp_path), {"failure_tilt_deg": 22, "phi_deg": [0]}, "block")
     summary = json.loads((tmp_path / "summary.json").read_text())

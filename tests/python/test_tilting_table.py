@@ -62,7 +62,8 @@ def test_an_out_folder_under_a_file_is_refused_by_name(tmp_path):
     assert proc.returncode != 0 and f"out = '{tmp_path}/file/run' cannot be written" in proc.stderr + proc.stdout
 
 
-SMALL_RUN = dict(rmin=0.003, rmax=0.012, start_tilt=20.0, post_failure_time=0.1, checkpoint_every=1.0)  # ~20 s
+SMALL_RUN = dict(rmin=0.003, rmax=0.012, start_tilt=20.0, post_failure_time=0.1, checkpoint_every=1.0,
+                 exact_resume=1)  # ~20 s
 
 
 def outcome(summary: dict) -> dict:

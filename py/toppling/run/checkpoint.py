@@ -36,14 +36,15 @@ class Checkpoint:
             f.write(text)
         os.replace(state_tmp, self.state_path)
 
-    def align(self) -> None:
+    @staticmethod
+    def align() -> None:
         """Pass the scene through its own serialization, as a save and a load would. YADE keeps
         state that a save drops (the collider's sorted bounds and its potential interactions,
         the time stepper's first-run flag), and a resumed run rebuilds it at another moment
         than the run that never stopped: the two then part in the last bits and, a chaotic
         system, in their breaks. A run that aligns wherever it may save resumes bit for bit."""
-        O.saveTmp(self.TAG)
-        O.loadTmp(self.TAG)
+        O.saveTmp(Checkpoint.TAG)
+        O.loadTmp(Checkpoint.TAG)
 
     def saved_inputs(self) -> dict[str, Any]:
         """The parameters of the checkpointed run, from the copy (or, without it, the scene)."""

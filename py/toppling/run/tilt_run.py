@@ -2,9 +2,9 @@
 table, gravity turns slowly to the start tilt, then by a step per stage until a stage fails;
 the failure may come to rest and the tilting go on; after the failure the run goes on so that
 the failure surface develops. The run is checkpointed after every stage and every
-``checkpoint_every`` wall seconds (at the next aligned chunk), and a run made from its
-checkpoint continues in the phase it stopped in (level, ramp, stage, arrest, post, analysis)
-as the run that never stopped would have."""
+``checkpoint_every`` wall seconds, and a run made from its checkpoint continues in the phase it
+stopped in (level, ramp, stage, arrest, post, analysis); with ``exact_resume`` as the run that
+never stopped would have, to the last bit."""
 from __future__ import annotations
 
 from dataclasses import dataclass, fields
@@ -25,7 +25,7 @@ from toppling.run.progress import Progress
 
 # parameters that may change between a run and its continuation
 FREE = ("resume", "checkpoint_every", "max_tilt", "post_failure_time", "max_wall_time")
-ALIGN_EVERY = 10  # chunks between alignments (Checkpoint.align: 0.3 s at 6,000 discs, a chunk 8.8 s: 0.3 % of a run)
+ALIGN_EVERY = 10  # chunks between alignments with exact_resume (Checkpoint.align)
 
 
 @dataclass
@@ -38,7 +38,10 @@ class TiltProtocol:
     ``post_failure_time`` [s]: the run after the failure. ``checkpoint_every`` [wall s].
     ``max_wall_time`` [wall s, over every run of one out folder]: the run stops there, saved,
     with the reason in its summary, and the same command with a larger one continues it (0: no
-    limit; every phase also ends at its simulated time limit)."""
+    limit; every phase also ends at its simulated time limit). ``exact_resume`` 1: a run resumed
+    from a checkpoint ends bit for bit as the run that never stopped (Checkpoint.align every
+    ALIGN_EVERY chunks; a realigned YADE scene steps up to 2x slower); 0: it ends as a run
+    whose last bits differ."""
     start_tilt: float
     step: float
     max_tilt: float
@@ -50,6 +53,7 @@ class TiltProtocol:
     post_failure_time: float
     checkpoint_every: float
     max_wall_time: float = 0.0
+    exact_resume: int = 0
 
     def __post_init__(self):
         require("start_tilt", self.start_tilt, "[0, 90)")
@@ -60,6 +64,7 @@ class TiltProtocol:
             require(name, getattr(self, name), "[0, inf)")
         engines.check_damping(self.damping, "damping")
         engines.check_damping(self.settle_damping, "settle_damping")
+        require("exact_resume", self.exact_resume, "whole [0, 1]")
 
     @classmethod
     def from_params(cls, params: Any) -> "TiltProtocol":
@@ -189,9 +194,11 @@ class TiltRun:
         return tilting.kinetic_energy_above(self.ids, self.off_table)
 
     def save_checkpoint(self) -> None:
-        """Save the run, aligned (Checkpoint.align) so that it resumes bit for bit; called at
-        moments every run of the same inputs passes: a phase's end, an aligned chunk."""
-        self.checkpoint.align()
+        """Save the run (with exact_resume aligned, Checkpoint.align, so that it resumes bit for
+        bit: then called only at moments every run of the same inputs passes, a phase's end or
+        an aligned chunk)."""
+        if self.protocol.exact_resume:
+            self.checkpoint.align()
         state = self.state
         state["points"], state["series"], state["wall_time"] = self.points.as_dict(), self.series.state(), self.wall_time()
         self.checkpoint.save(state)
@@ -199,8 +206,9 @@ class TiltRun:
 
     def on_chunk(self) -> None:
         self.state["chunks"] += 1
-        aligned = self.state["chunks"] % ALIGN_EVERY == 0
-        if aligned:  # where a checkpoint may be saved: a run resumed from it goes on as this one does
+        exact = self.protocol.exact_resume
+        aligned = not exact or self.state["chunks"] % ALIGN_EVERY == 0  # where a checkpoint may be saved
+        if aligned and exact:  # a run resumed from here goes on as this one does
             self.checkpoint.align()
         self.points.record()
         self.state["energy"].append((O.time, tilting.current_tilt(), self.slope_energy()))  # the ramp shows as one
