@@ -1,6 +1,7 @@
 #include "DiscInteractionLoop.hpp"
 #include "ParallelBondLaw.hpp"
 #include "SmoothJoint.hpp"
+#include <array>
 #include <core/Scene.hpp>
 #include <pkg/common/Sphere.hpp>
 #include <pkg/dem/ScGeom.hpp>
@@ -12,9 +13,9 @@ YADE_PLUGIN((DiscInteractionLoop));
 namespace {
 	// Our laws add to `sums` while it lives (also if the loop throws).
 	struct SumsInUse {
-		std::vector<shared_ptr<LawFunctor>> laws;
-		SumsInUse(std::vector<shared_ptr<LawFunctor>> laws_, toppling::ForceSums* sums)
-		        : laws(std::move(laws_))
+		std::array<LawFunctor*, 2> laws;
+		SumsInUse(std::array<LawFunctor*, 2> laws_, toppling::ForceSums* sums)
+		        : laws(laws_)
 		{
 			set(sums);
 		}
@@ -22,7 +23,7 @@ namespace {
 		void set(toppling::ForceSums* sums) const
 		{
 			for (const auto& law : laws)
-				if (law) static_cast<BreakingLaw*>(law.get())->sums = sums;
+				if (law) static_cast<BreakingLaw*>(law)->sums = sums;
 		}
 	};
 
@@ -62,7 +63,7 @@ void DiscInteractionLoop::action()
 #else
 	sums.reset(1, motion.size());
 #endif
-	const SumsInUse inUse({ bonds, joints }, &sums);
+	const SumsInUse inUse({ bonds.get(), joints.get() }, &sums);
 
 	InteractionContainer& interactions = *scene->interactions;
 	const long            size         = long(interactions.size());

@@ -193,11 +193,11 @@ class TiltRun:
         """The kinetic energy of the discs still on the table: a column fallen off it is no longer the slope's."""
         return tilting.kinetic_energy_above(self.ids, self.off_table)
 
-    def save_checkpoint(self) -> None:
-        """Save the run (with exact_resume aligned, Checkpoint.align, so that it resumes bit for
-        bit: then called only at moments every run of the same inputs passes, a phase's end or
-        an aligned chunk)."""
-        if self.protocol.exact_resume:
+    def save_checkpoint(self, aligned: bool = False) -> None:
+        """Save the run (with exact_resume aligned, Checkpoint.align, unless ``aligned`` already,
+        so that it resumes bit for bit: then called only at moments every run of the same inputs
+        passes, a phase's end or an aligned chunk)."""
+        if self.protocol.exact_resume and not aligned:
             self.checkpoint.align()
         state = self.state
         state["points"], state["series"], state["wall_time"] = self.points.as_dict(), self.series.state(), self.wall_time()
@@ -225,12 +225,16 @@ class TiltRun:
             self.progress(f"tilt {tilting.current_tilt():.1f} deg",
                           (self.state["tilt"] - p.start_tilt) / span if span > 0 else None, stage_bound=bound)
         if aligned and self.progress.wall_time - self.last_save > p.checkpoint_every:  # a stage may run for hours
-            self.save_checkpoint()
+            self.save_checkpoint(aligned=True)
         if aligned and 0 < p.max_wall_time < self.wall_time():
-            self.save_checkpoint()
+            self.save_checkpoint(aligned=True)
             raise Stopped(f"max_wall_time = {p.max_wall_time:g} s reached in the {self.state['phase']['name']} phase at "
                           f"{tilting.current_tilt():.1f} deg: run the same command with a larger max_wall_time (0: no "
                           "limit) to continue")
+
+    def at_time_limit(self, phase: dict) -> bool:
+        """Whether the stage of ``phase`` ran to max_stage_time (rather than ending at rest or in a collapse)."""
+        return O.time - phase["start"] > self.criteria.max_stage_time
 
     def begin(self, name: str, start: Optional[float] = None, **extra) -> dict:
         """Enter a phase of the run; the checkpoint records it and when it began (now by
@@ -305,7 +309,7 @@ class TiltRun:
         judged = ~off if outcome == "equilibrium" else np.ones_like(off)  # a column gone off the table does not count
         moved = float(np.linalg.norm(now - reference, axis=1)[judged].max(initial=0.0))
         stage = {"tilt": state["tilt"], "outcome": outcome, "time": O.time, "steps": O.iter,
-                 "at_time_limit": O.time - phase["start"] > self.criteria.max_stage_time,
+                 "at_time_limit": self.at_time_limit(phase),
                  "moved_mm": 1e3 * moved,  # a local collapse that came to rest shows here
                  "gone": [c for c, gone in zip(self.watched_columns, off) if gone]}
         if outcome == "failed":  # a collapse or a creep: whoever weighs the failure tilt needs to know which
@@ -357,8 +361,7 @@ class TiltRun:
             engines.set_local_damping(p.settle_damping)
             if self.run_stage(0.0, phase) == "failed":
                 raise RuntimeError("the model does not stand on the level table: check the outline and the joints")
-            limit = " (at max_stage_time: still moving, but less than rest_speed)" \
-                if O.time - phase["start"] > self.criteria.max_stage_time else ""
+            limit = " (at max_stage_time: still moving, but less than rest_speed)" if self.at_time_limit(phase) else ""
             print(f"level table: equilibrium after {O.time - phase['start']:.3f} s{limit}", flush=True)
             state["breaks_before_stages"] = {"level": engines.broken_bonds()}
             phase = self.begin("ramp")
