@@ -63,11 +63,11 @@ def test_tilted_layout_height_and_far_edges_follow_the_rotated_outline():
     # two columns 5 cm wide, 0.1 and 0.3 m high, toe at x = 0.1; tilted 30 deg towards the toe
     layout = columns.ColumnLayout(toe_x=0.1, width=0.05, heights=[0.1, 0.3])
     c, s = math.cos(math.radians(30)), math.sin(math.radians(30))
-    # tilting towards the toe raises what lies behind it: the highest point is column 2's far
-    # top corner, 0.1 m behind the toe and 0.3 m up
-    assert layout.tilted_height(30) == pytest.approx(0.1 * s + 0.3 * c)
+    # H is the crest's: the top centre of the tallest column, 0.075 m behind the toe and 0.3 m up
+    # (tilting towards the toe raises it; what lies behind the crest is no part of H)
+    assert layout.crest_height(30) == pytest.approx(0.075 * s + 0.3 * c)
     assert layout.far_edges(30) == pytest.approx([0.05 * c - 0.1 * s, 0.10 * c - 0.3 * s])
-    assert layout.tilted_height(0) == pytest.approx(0.3)
+    assert layout.crest_height(0) == pytest.approx(0.3)
     assert layout.far_edges(0) == pytest.approx([0.05, 0.10])
 
 
@@ -95,7 +95,7 @@ def test_table_failure_finds_the_hinge_plane_of_toppling_columns_and_ignores_dis
     assert result["overall"] == result["planes"][0]  # one plane: the overall surface is it
     assert result["split_p"] is None  # four failure points: no split into two lines of >= 3
     assert result["zones"] == ["toppling"] * 4 + ["no-movement"] * 2
-    assert result["t_over_h"] == pytest.approx(layout.far_edges(30.0)[3] / layout.tilted_height(30.0))
+    assert result["t_over_h"] == pytest.approx(layout.far_edges(30.0)[3] / layout.crest_height(30.0))
 
 
 @pytest.mark.parametrize("tilt, expected", [(16.0, "equilibrium"), (27.0, "failed")])

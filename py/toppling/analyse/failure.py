@@ -372,7 +372,7 @@ def table_failure(layout, reference: np.ndarray, now: np.ndarray, tops: dict[str
         slope_frame(np.asarray(cracks, dtype=float).reshape(-1, 2), toe, 90), band=band,
         fell_off=[label in top_of and now[top_of[label], 1] < floor for label in labels], least_motion=least_motion)
     planes = fit_failure_surface(points) if len(points) >= 2 else []
-    height = layout.tilted_height(tilt_deg)
+    height = layout.crest_height(tilt_deg)
     return {"planes": planes, "overall": overall_surface(points) if planes else None, "split_p": split_p_value(points),
             "failure_points": points, "zones": zones,
             "height": height, **zone_distances(zones, layout.far_edges(tilt_deg), height)}

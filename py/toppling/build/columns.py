@@ -71,10 +71,13 @@ class ColumnLayout:
         a = math.radians(tilt_deg)
         return [k * self.width * math.cos(a) - h * math.sin(a) for k, h in enumerate(self.heights, start=1)]
 
-    def tilted_height(self, tilt_deg: float) -> float:
-        """Height H of the slope that the columns make on a table tilted by ``tilt_deg``."""
+    def crest_height(self, tilt_deg: float) -> float:
+        """Height H of the slope that the columns make on a table tilted by ``tilt_deg``: of its
+        crest, the top centre of the tallest column, above the toe (the thesis' H, e.g. Table 5-2's
+        47.39 cm; a top surface rising behind the crest, as at β = 8°, does not count)."""
         a = math.radians(tilt_deg)
-        return max(-math.sin(a) * (x - self.toe_x) + math.cos(a) * y for x, y in self.section())
+        x, y = self.top_centre(1 + self.heights.index(max(self.heights)))
+        return -math.sin(a) * (x - self.toe_x) + math.cos(a) * y
 
     def top_centre(self, k: int) -> tuple[float, float]:
         left, right = self.span(k)

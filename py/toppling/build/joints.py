@@ -16,6 +16,12 @@ def rock_functor() -> Ip2_ParallelBondMat_ParallelBondMat_ParallelBondPhys:
     return functor(Ip2_ParallelBondMat_ParallelBondMat_ParallelBondPhys, "physDispatcher")
 
 
+def blocks() -> list[int]:
+    """The block of every body (by id; -1: none) as the installed joints make them; [] before any joint."""
+    system = rock_functor().joints
+    return list(system.blockOfBody) if system is not None else []
+
+
 def is_persistent(geometry: JointSetGeometry) -> bool:
     """A set whose joints run through the whole section (no rock bridges, not explicit)."""
     return not geometry.segmentStarts and geometry.bridgeLength == 0

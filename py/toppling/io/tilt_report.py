@@ -72,7 +72,7 @@ def report_failure(run: TiltRun, out: str, thesis: dict, name: str) -> None:
     output.write_summary(out, state["inputs"], **summary)
     phi_text = f"phi = {failure.phi_text(summary)} deg" if summary["phi_deg"] else "no failure surface found"
     plot_failure(run, out, name, onset, result)
-    if summary["failed_in_first_stage"]:
+    if summary["failed_in_first_stage"] and run.protocol.start_tilt > run.protocol.settle_tilt:  # else one tilt by design
         print(f"WARNING: the first stage ({run.protocol.start_tilt} deg) failed: the failure tilt is at most that; "
               "rerun with a lower start_tilt")
     distances = ", ".join(f"{label} {summary[key]:.2f}" if summary[key] is not None else f"{label} -"

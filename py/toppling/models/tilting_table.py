@@ -155,24 +155,28 @@ class TiltingTable:
         return layout
 
     def column_top_bands(self, layout: columns.ColumnLayout) -> dict[str, list[int]]:
-        """The rock discs (>= 2 intact bonds) within 2 Rmax of each column's top, by column
-        label: their median position is what the stage criteria watch (a loose disc rolling
-        off, or a corner breaking off, is not the column moving). A column too small for the
-        discs to bond is not watched."""
-        members = {k: [] for k in range(1, layout.count + 1)}
-        for b in O.bodies:
-            k = layout.column_of(b.state.pos[0]) if b is not None else 0
-            if k:
-                members[k].append(b.id)
-        bands = {}
-        for k, ids in members.items():
-            rock = bonding.rock(ids)
-            if not rock:
-                print(f"column {failure.column_label(k)}: no bonded discs (rmax = {self.rmax} m), not watched")
-                continue
-            top = max(O.bodies[i].state.pos[1] for i in rock)
-            bands[failure.column_label(k)] = [i for i in rock if O.bodies[i].state.pos[1] > top - 2 * self.rmax]
-        return bands
+        return column_top_bands(layout, self.rmax)
+
+
+def column_top_bands(layout: columns.ColumnLayout, rmax: float) -> dict[str, list[int]]:
+    """The rock discs (>= 2 intact bonds) within 2 ``rmax`` of each column's top, by column
+    label: their median position is what the stage criteria watch (a loose disc rolling off, or
+    a corner breaking off, is not the column moving). A column too small for the discs to bond
+    is not watched."""
+    members = {k: [] for k in range(1, layout.count + 1)}
+    for b in O.bodies:
+        k = layout.column_of(b.state.pos[0]) if b is not None and b.state.pos[1] > 0 else 0
+        if k:
+            members[k].append(b.id)
+    bands = {}
+    for k, ids in members.items():
+        rock = bonding.rock(ids)
+        if not rock:
+            print(f"column {failure.column_label(k)}: no bonded discs (rmax = {rmax} m), not watched")
+            continue
+        top = max(O.bodies[i].state.pos[1] for i in rock)
+        bands[failure.column_label(k)] = [i for i in rock if O.bodies[i].state.pos[1] > top - 2 * rmax]
+    return bands
 
 
 def check_switch(params: Any, name: str) -> bool:
@@ -209,10 +213,13 @@ def from_params(p: Any, thesis: Any) -> TiltingTable:
         timestep_safety=p.timestep_safety, damping=p.damping)
 
 
-def start(model: TiltingTable, protocol: tilt_run.TiltProtocol, criteria: tilting.StageCriteria, inputs: dict,
+def start(model, protocol: tilt_run.TiltProtocol, criteria: tilting.StageCriteria, inputs: dict,
           out: str, resume: int) -> tilt_run.TiltRun:
-    """The run of ``model`` in ``out`` with ``inputs`` (the parameters it was made from): built
-    afresh, or continued from the checkpoint there (``resume``: Checkpoint.continues)."""
+    """The run of ``model`` (a TiltingTable, or any model with its ``build``, ``expected_discs``,
+    ``column_top_bands``, ``rmin`` and ``rmax``; with a ``settled()`` method, called once the
+    model stands at the protocol's settle_tilt) in ``out`` with ``inputs`` (the parameters it was
+    made from): built afresh, or continued from the checkpoint there (``resume``:
+    Checkpoint.continues)."""
     output.prepare_out(out, OUTPUT_BYTES_PER_DISC * model.expected_discs())
     checkpoint = Checkpoint(out)
     if checkpoint.continues(inputs, resume, free=tilt_run.FREE):
@@ -227,5 +234,12 @@ def start(model: TiltingTable, protocol: tilt_run.TiltProtocol, criteria: tiltin
         ids = [b.id for b in O.bodies if b is not None]
         points = column_top_points(layout, bonding.rock(ids))  # a loose top disc may drop off the table
         state = tilt_run.fresh_state(inputs, layout, ids, model.column_top_bands(layout), protocol.start_tilt)
-    series = paraview.ParaViewSeries(f"{out}/paraview", joints.rock_functor().joints.blockOfBody, state.get("series"))
-    return tilt_run.TiltRun(protocol, criteria, checkpoint, state, points, series, model.rmin, model.rmax)
+    series = paraview.ParaViewSeries(f"{out}/paraview", joints.blocks(), state.get("series"))
+    settled = getattr(model, "settled", None)
+
+    def joints_known() -> None:  # the pictures colour the blocks the joints made
+        settled()
+        series.block_of_body = joints.blocks()
+
+    return tilt_run.TiltRun(protocol, criteria, checkpoint, state, points, series, model.rmin, model.rmax,
+                            settled=joints_known if settled else None)

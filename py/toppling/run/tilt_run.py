@@ -30,10 +30,11 @@ ALIGN_EVERY = 10  # chunks between alignments with exact_resume (Checkpoint.alig
 
 @dataclass
 class TiltProtocol:
-    """How the table tilts: at ``tilt_rate`` [deg/s] to ``start_tilt`` [deg], then ``step``
-    [deg] per stage, each step ramped at ``stage_rate`` [deg/s] (0: at once), up to
-    ``max_tilt``. ``settle_damping``: NewtonIntegrator's local damping on the level table,
-    ``damping`` while it tilts. ``arrest_time`` [s]: a failure that comes to rest within it is
+    """How the table tilts: the model settles at ``settle_tilt`` [deg] (0: the level table; a
+    slope built in its table frame settles at its own tilt), then turns at ``tilt_rate`` [deg/s]
+    to ``start_tilt`` [deg], then ``step`` [deg] per stage, each step ramped at ``stage_rate``
+    [deg/s] (0: at once), up to ``max_tilt``. ``settle_damping``: NewtonIntegrator's local
+    damping while it settles, ``damping`` while it tilts. ``arrest_time`` [s]: a failure that comes to rest within it is
     not the slope's and the tilt goes on (0: the first failing stage is the failure).
     ``post_failure_time`` [s]: the run after the failure. ``checkpoint_every`` [wall s].
     ``max_wall_time`` [wall s, over every run of one out folder]: the run stops there, saved,
@@ -54,9 +55,11 @@ class TiltProtocol:
     checkpoint_every: float
     max_wall_time: float = 0.0
     exact_resume: int = 0
+    settle_tilt: float = 0.0
 
     def __post_init__(self):
-        require("start_tilt", self.start_tilt, "[0, 90)")
+        require("settle_tilt", self.settle_tilt, "[0, 90)")
+        require("start_tilt", self.start_tilt, f"[{self.settle_tilt}, 90)")  # settle_tilt <= start_tilt
         require("max_tilt", self.max_tilt, f"[{self.start_tilt}, 90)")  # start_tilt <= max_tilt
         for name in ("step", "tilt_rate", "checkpoint_every"):
             require(name, getattr(self, name), "(0, inf)")
@@ -68,8 +71,9 @@ class TiltProtocol:
 
     @classmethod
     def from_params(cls, params: Any) -> "TiltProtocol":
-        """The protocol from an object with these attributes (``yade.params.table``)."""
-        return cls(**{f.name: getattr(params, f.name) for f in fields(cls)})
+        """The protocol from an object with these attributes (``yade.params.table``; those with
+        a default may be missing)."""
+        return cls(**{f.name: getattr(params, f.name) for f in fields(cls) if hasattr(params, f.name)})
 
 
 def fresh_state(inputs: dict[str, Any], layout: columns.ColumnLayout, ids: list[int], bands: dict[str, list[int]],
@@ -164,8 +168,9 @@ class TiltRun:
 
     def __init__(self, protocol: TiltProtocol, criteria: tilting.StageCriteria, checkpoint: Checkpoint,
                  state: dict[str, Any], points: MonitoringPoints, series: paraview.ParaViewSeries,
-                 rmin: float, rmax: float):
+                 rmin: float, rmax: float, settled: Optional[Callable[[], None]] = None):
         self.protocol, self.criteria, self.checkpoint, self.state = protocol, criteria, checkpoint, state
+        self.settled = settled  # what the model does once it stands, before the tilt (e.g. a slope's joints)
         self.points, self.series, self.rmin, self.rmax = points, series, rmin, rmax
         self.layout = columns.ColumnLayout(**state["layout"])
         self.off_table = -2 * rmax
@@ -178,13 +183,17 @@ class TiltRun:
         self.earlier_wall_time = state.get("wall_time", 0.0)  # of the runs this one resumes
         self.last_save = self.progress.wall_time
         p = protocol
-        self.known_length = {"ramp": (f"ramp to {p.start_tilt:g} deg", p.start_tilt / p.tilt_rate),
+        self.known_length = {"ramp": (f"ramp to {p.start_tilt:g} deg", self.ramp_duration()),
                              "arrest": ("after failure, at most", p.arrest_time),
                              "post": ("after failure", p.post_failure_time)}  # phases whose ETA is their end
 
     @property
     def failure_tilt(self) -> Optional[float]:
         return self.state["failure_tilt"]
+
+    def ramp_duration(self) -> float:
+        p = self.protocol
+        return (p.start_tilt - p.settle_tilt) / p.tilt_rate
 
     def wall_time(self) -> float:
         return self.earlier_wall_time + self.progress.wall_time
@@ -338,7 +347,7 @@ class TiltRun:
         return phase
 
     def run(self) -> Optional[float]:
-        """Stand on the level table, tilt to start_tilt, then in stages until a stage fails
+        """Settle at settle_tilt (the level table), tilt to start_tilt, then in stages until a stage fails
         (then run post_failure_time after the failure) or max_tilt stands. Returns the failure
         tilt [deg], None if the slope stood up to max_tilt or the run stopped at max_wall_time
         (``state["stopped"]`` says where)."""
@@ -359,15 +368,18 @@ class TiltRun:
         phase = state.get("phase") or self.begin("level", reference=tilting.medians(self.watched).tolist())
         if phase["name"] == "level":
             engines.set_local_damping(p.settle_damping)
-            if self.run_stage(0.0, phase) == "failed":
-                raise RuntimeError("the model does not stand on the level table: check the outline and the joints")
+            if self.run_stage(p.settle_tilt, phase) == "failed":
+                raise RuntimeError(f"the model does not stand at settle_tilt = {p.settle_tilt:g} deg, where it settles: "
+                                   "check the outline and the joints")
             limit = " (at max_stage_time: still moving, but less than rest_speed)" if self.at_time_limit(phase) else ""
-            print(f"level table: equilibrium after {O.time - phase['start']:.3f} s{limit}", flush=True)
+            print(f"settled at {p.settle_tilt:g} deg: equilibrium after {O.time - phase['start']:.3f} s{limit}", flush=True)
             state["breaks_before_stages"] = {"level": engines.broken_bonds()}
+            if self.settled:
+                self.settled()
             phase = self.begin("ramp")
         engines.set_local_damping(p.damping)  # from here on the loading's, also in a resumed run
         if phase["name"] == "ramp":
-            tilting.ramp(0.0, p.start_tilt, p.start_tilt / p.tilt_rate, self.on_chunk, start=phase["start"])
+            tilting.ramp(p.settle_tilt, p.start_tilt, self.ramp_duration(), self.on_chunk, start=phase["start"])
             before = self.count_ramp_breaks(phase["start"])
             if warning := ramp_warning(before):  # said now: the user may stop the run rather than wait for its stages
                 print(warning, flush=True)
@@ -392,7 +404,7 @@ class TiltRun:
         and tell them from those that freed loose discs (``sort_breaks_before_stages``)."""
         p, before = self.protocol, self.state["breaks_before_stages"]
         before["ramp"] = engines.broken_bonds() - before["level"]
-        return sort_breaks_before_stages(before, lambda t: min(p.start_tilt, p.tilt_rate * (t - start)))
+        return sort_breaks_before_stages(before, lambda t: min(p.start_tilt, p.settle_tilt + p.tilt_rate * (t - start)))
 
     def run_after_failure(self, phase: dict) -> None:
         """Let the failure surface develop for post_failure_time after the failure (also when a
