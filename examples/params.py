@@ -90,13 +90,14 @@ TABLE_5_5 = dict(density=3000.0, young=15.05e6, knKs=1.4, frictionAngle=math.ata
 TABLE_5_5_BOND_GAP = 1.05e-3  # [m]
 TABLE_5_6 = dict(main=(12e11, 0.12), base=(12e10, 0.23), gap=0.5e-3)  # (kn = ks [N/m3], mu); gap [m]
 EQUIVALENT_SLOPE_RESULTS = dict(failure_tilt_deg=35, phi_deg=[15], s_over_h=0.79, t_over_h=0.20,
-                                stable_zone_columns=(9, 13))  # §5.3.2, Fig 5-19
+                                stable_zone_columns=(9, 13),  # §5.3.2, Fig 5-19
+                                monitoring_points=["C-3", "D-4", "G-7", "H-8", "I-9", "M-13", "N-14", "O-15"])  # Fig 5-20
 # The base model (examples/equivalent_slope/run.py's defaults): Table 5-5's discs at the packer's
 # porosity; joints x0.01 stiff as in the tilting table (the time step); strengths as Table 5-5
 # until calibrated (toppling.models.equivalent_slope.from_params, .protocol).
 EQUIVALENT_SLOPE = dict(
     rmin=1.5e-3, rmax=3.5e-3, porosity=0.18, seed=1, spacing=0.0, strength_factor=1.0,  # m, m, -, -, m (0: 0.047), -
-    main_joint_friction=0.0, joint_stiffness_scale=0.01, base_joints="every_other", merged_pair=0, z_order=0,
-    timestep_safety=0.8, damping=0.0, settle_damping=0.7,
+    main_joint_friction=TABLE_5_6["main"][1], joint_stiffness_scale=0.01, base_joints="every_other", merged_pair=0,
+    z_order=0, timestep_safety=0.8, damping=0.0, settle_damping=0.7,
     chunk=0.02, rest_speed=1e-3, fail_displacement=0.05, max_stage_time=2.0, fail_columns=2,  # s, m/s, m, s, -
     post_failure_time=0.3, resume=-1, checkpoint_every=600.0, max_wall_time=0.0, exact_resume=0)  # s, -, wall s x2

@@ -137,26 +137,32 @@ def tilt_history(out: str, energy: Sequence[tuple[float, float, float]], points:
 
 
 def monitoring(out: str, points: MonitoringPoints, labels: Sequence[str], still: float = 1e-4,
-               normal_dydx: Optional[float] = None) -> str:
-    """X, Y, the direction Y/X (the thesis' dY/dX, drawn once a point has moved ``still`` [m])
-    and total displacement of the labelled points against time (Fig 5-21); ``normal_dydx`` draws
-    the direction of the main joints' normal, which a toppling column's top passes."""
-    fig, axes = plt.subplots(2, 2, figsize=(10, 7))
+               normal_dydx: Optional[float] = None, turn_deg: float = 0.0, x_into_slope: bool = False) -> str:
+    """X, Y, the direction Y/X (the thesis' dY/dX, drawn once a point has moved ``still`` [m]),
+    Y against X and total displacement of the labelled points against time (Fig 5-21);
+    ``normal_dydx`` draws the direction of the main joints' normal, which a toppling column's top
+    passes. X and Y are the scene's turned by ``turn_deg`` clockwise (a table tilted by it made
+    level: the world's horizontal and vertical), X pointing into the slope with ``x_into_slope``
+    (as the thesis draws a slope, face on the left)."""
+    fig, axes = plt.subplots(2, 3, figsize=(14, 7))
     t = np.array(points.time)
     for label in labels:
-        x, y = 1e3 * np.array(points.x[label]), 1e3 * np.array(points.y[label])
+        x, y = (1e3 * np.array(d) for d in points.displacement(label, turn_deg, x_into_slope))
         axes[0, 0].plot(t, x, label=label)
         axes[0, 1].plot(t, y, label=label)
-        axes[1, 0].plot(t, points.direction(label, still), label=label)
+        axes[0, 2].plot(t, points.direction(label, still, turn_deg, x_into_slope), label=label)
+        axes[1, 0].plot(x, y, label=label)
         axes[1, 1].plot(t, np.hypot(x, y), label=label)
-    for ax, ylabel in zip(axes.flat, ("X (mm)", "Y (mm)", f"dY/dX = Y/X (once moved {1e3 * still:g} mm)",
+    for ax, ylabel in zip(axes.flat, ("X (mm)", "Y (mm)", f"dY/dX = Y/X (once moved {1e3 * still:g} mm)", "Y (mm)",
                                       "total displacement (mm)")):
         ax.set_xlabel("simulated time (s)")
         ax.set_ylabel(ylabel)
         ax.grid(True, alpha=0.3)
+    axes[1, 0].set_xlabel("X (mm)")
+    axes[1, 2].axis("off")
     if normal_dydx is not None:
-        normal = axes[1, 0].axhline(normal_dydx, color="r", ls="--", lw=1, label="normal to the main joints")
-        axes[1, 0].legend(handles=[normal], fontsize=7, loc="lower left")
-    axes[1, 0].set_ylim(-5, 5)
+        normal = axes[0, 2].axhline(normal_dydx, color="r", ls="--", lw=1, label="normal to the main joints")
+        axes[0, 2].legend(handles=[normal], fontsize=7, loc="lower left")
+    axes[0, 2].set_ylim(-5, 5)
     axes[0, 0].legend(fontsize=7)
     return output.save_figure(fig, out, "monitoring_points")

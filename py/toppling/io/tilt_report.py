@@ -3,6 +3,8 @@ line, for a slope that failed (its failure surface, zones, S/H and T/H, after th
 and at the failure's onset), stood up to max_tilt, or was stopped at max_wall_time."""
 from __future__ import annotations
 
+import math
+
 import numpy as np
 from yade import O
 
@@ -48,10 +50,22 @@ def report_stable(run: TiltRun, out: str, thesis: dict, name: str) -> None:
                          phi_deg=[], s_over_h=None, t_over_h=None, top_displacement_mm=tops, **record)
     plot_model(run, out, name)
     plots.tilt_history(out, state["energy"], points, None)
-    plots.monitoring(out, points, points.labels[::2], normal_dydx=TABLE_NORMAL_DYDX)
+    plot_monitoring(run, out, thesis)
     arrested = arrested_text(record["arrested_failures"])
     print(f"no failure up to max_tilt = {run.protocol.max_tilt} deg{arrested}: run again with a higher max_tilt; "
           "column tops moved " + ", ".join(f"{label} {mm:.2f}" for label, mm in tops.items()) + " mm")
+
+
+def plot_monitoring(run: TiltRun, out: str, thesis: dict) -> None:
+    """The monitoring points' records (Fig 5-21): of the tilting table, every other column top in
+    the table's frame; of a slope settled at a tilt (its world), the thesis' points
+    (``thesis["monitoring_points"]``) in the world's frame, drawn as the thesis draws a slope."""
+    points, tilt = run.points, run.protocol.settle_tilt
+    if tilt == 0:
+        plots.monitoring(out, points, points.labels[::2], normal_dydx=TABLE_NORMAL_DYDX)
+        return
+    labels = [label for label in thesis.get("monitoring_points", points.labels[::2]) if label in points.labels]
+    plots.monitoring(out, points, labels, normal_dydx=math.tan(math.radians(tilt)), turn_deg=tilt, x_into_slope=True)
 
 
 def report_failure(run: TiltRun, out: str, thesis: dict, name: str) -> None:
@@ -65,13 +79,14 @@ def report_failure(run: TiltRun, out: str, thesis: dict, name: str) -> None:
         planes=len(result["planes"]), two_planes_p=result["split_p"],
         s_over_h=result["s_over_h"], t_over_h=result["t_over_h"],
         zones={failure.column_label(k + 1): z for k, z in enumerate(result["zones"])},
+        stable_zone_columns=[k + 1 for k, z in enumerate(result["zones"]) if z == "stable"],
         failure_points=result["failure_points"], slope_height=result["height"], thesis=thesis,
         onset={**failure.surface_angles(onset), "s_over_h": onset["s_over_h"], "t_over_h": onset["t_over_h"],
                "zones": {failure.column_label(k + 1): z for k, z in enumerate(onset["zones"])}},
         **run.record())
     output.write_summary(out, state["inputs"], **summary)
     phi_text = f"phi = {failure.phi_text(summary)} deg" if summary["phi_deg"] else "no failure surface found"
-    plot_failure(run, out, name, onset, result)
+    plot_failure(run, out, name, onset, result, thesis)
     if summary["failed_in_first_stage"] and run.protocol.start_tilt > run.protocol.settle_tilt:  # else one tilt by design
         print(f"WARNING: the first stage ({run.protocol.start_tilt} deg) failed: the failure tilt is at most that; "
               "rerun with a lower start_tilt")
@@ -124,7 +139,7 @@ def plot_slope(run: TiltRun, out: str, name: str, result: dict, breaks: int, tit
                 zones=zone_marks(run, result["zones"]))
 
 
-def plot_failure(run: TiltRun, out: str, name: str, onset: dict, after: dict) -> None:
+def plot_failure(run: TiltRun, out: str, name: str, onset: dict, after: dict, thesis: dict) -> None:
     """The model, the failure at its onset (the failing stage's end, as the thesis' Fig 5-8) and
     after the post-failure run, the tilt history and the monitoring points."""
     tilt, points = run.failure_tilt, run.points
@@ -134,4 +149,4 @@ def plot_failure(run: TiltRun, out: str, name: str, onset: dict, after: dict) ->
         phi = failure.phi_text(failure.surface_angles(result)) if result["planes"] else "-"
         plot_slope(run, out, picture, result, breaks, f"{name}: {when} at {tilt:.1f} deg, phi = {phi} deg")
     plots.tilt_history(out, run.state["energy"], points, tilt)
-    plots.monitoring(out, points, points.labels[::2], normal_dydx=TABLE_NORMAL_DYDX)
+    plot_monitoring(run, out, thesis)

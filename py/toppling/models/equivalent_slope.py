@@ -203,8 +203,12 @@ class EquivalentSlope:
 def from_params(p: Any, thesis: Any) -> EquivalentSlope:
     """The model from a parameter set ``p`` (``yade.params.table``; the names of
     examples/params.py's EQUIVALENT_SLOPE) and the thesis' tables ``thesis`` (examples/params.py).
-    ``strength_factor`` scales Table 5-5's bond tensile strength and cohesion together."""
+    ``strength_factor`` scales Table 5-5's bond tensile strength and cohesion together;
+    ``main_joint_friction`` is the main joints' (Table 5-6: 0.12; Table 5-10 varies it from 0);
+    ``spacing`` 0 is the thesis' 0.047 m; ``base_joints`` 'every_other', 'none' or explicit
+    (``parse_base_joints``), ``merged_pair`` N1 > 0 merges Table 5-7's pair (N1 + 1)-N1."""
     require("strength_factor", p.strength_factor, "(0, inf)")
+    require("main_joint_friction", p.main_joint_friction, "[0, inf)")
     require("joint_stiffness_scale", p.joint_stiffness_scale, "(0, 1]")
     rock = dict(thesis.TABLE_5_5)
     rock["bondTensileStrength"] *= p.strength_factor
@@ -218,7 +222,7 @@ def from_params(p: Any, thesis: Any) -> EquivalentSlope:
         base = merged(every_other_column(count) if base is None else base, p.merged_pair)
     return EquivalentSlope(
         shape=shape, rock=rock,
-        main=JointMaterial(p.joint_stiffness_scale * joint["main"][0], p.main_joint_friction or joint["main"][1]),
+        main=JointMaterial(p.joint_stiffness_scale * joint["main"][0], p.main_joint_friction),
         base=JointMaterial(p.joint_stiffness_scale * joint["base"][0], joint["base"][1]),
         joint_gap=joint["gap"], bond_gap=thesis.TABLE_5_5_BOND_GAP, rmin=p.rmin, rmax=p.rmax, porosity=p.porosity,
         seed=p.seed, base_joints=base, z_order=bool(p.z_order), timestep_safety=p.timestep_safety,

@@ -30,12 +30,23 @@ class MonitoringPoints:
     def total(self, label: str) -> list[float]:
         return [(dx * dx + dy * dy) ** 0.5 for dx, dy in zip(self.x[label], self.y[label])]
 
-    def direction(self, label: str, still: float) -> list[float]:
+    def displacement(self, label: str, turn_deg: float = 0.0, x_into_slope: bool = False) -> tuple[list[float], list[float]]:
+        """X and Y of the point's displacement since the start: the scene's turned by
+        ``turn_deg`` clockwise (a table tilted by it made level: the world's horizontal and
+        vertical), X pointing the other way with ``x_into_slope`` (as the thesis draws a slope,
+        face on the left)."""
+        a = math.radians(turn_deg)
+        c, s, sign = math.cos(a), math.sin(a), -1.0 if x_into_slope else 1.0
+        return ([sign * (c * dx + s * dy) for dx, dy in zip(self.x[label], self.y[label])],
+                [-s * dx + c * dy for dx, dy in zip(self.x[label], self.y[label])])
+
+    def direction(self, label: str, still: float, turn_deg: float = 0.0, x_into_slope: bool = False) -> list[float]:
         """Y/X, the direction of the point's displacement since the start (the thesis' dY/dX,
-        Fig 5-21 c: a steady value is a steady sense of motion); NaN while the point has moved
-        less than ``still`` [m], where the ratio of two round-off-sized numbers is noise."""
-        return [dy / dx if dx != 0 and (dx * dx + dy * dy) ** 0.5 >= still else math.nan
-                for dx, dy in zip(self.x[label], self.y[label])]
+        Fig 5-21 c: a steady value is a steady sense of motion) in the frame of ``displacement``;
+        NaN while the point has moved less than ``still`` [m], where the ratio of two
+        round-off-sized numbers is noise."""
+        x, y = self.displacement(label, turn_deg, x_into_slope)
+        return [dy / dx if dx != 0 and (dx * dx + dy * dy) ** 0.5 >= still else math.nan for dx, dy in zip(x, y)]
 
     def rate_since(self, label: str, since: float, until: Optional[float] = None) -> float:
         """How fast [m/s] the point's total displacement changed from the record nearest the

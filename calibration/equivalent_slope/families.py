@@ -1,0 +1,62 @@
+"""Write examples/equivalent_slope/families.table: the four parametric families of thesis §5.3.3
+on the base model (examples/params.py's EQUIVALENT_SLOPE), each case on packing seeds 1-3 (the
+same packings in every case: differences between cases are paired).
+
+    source scripts/env.sh; /usr/bin/python3 calibration/equivalent_slope/families.py
+
+Our reading of the cases (the thesis' drawings are missing):
+* Table 5-7, (N2-N1): the base joints of columns N1 and N2 = N1 + 1 as one joint crossing both
+  (``merged_pair`` N1); case I is (17-16), case XVI (2-1).
+* Table 5-8: I one base joint along the whole table plane; II none; III one crossing columns 1-3;
+  IV each base joint (columns 1, 3, ...) extended across the next column (1-2, 3-4, ...); V the
+  base set and a copy of it 0.13 m up the columns.
+* Table 5-9: main-joint spacing 0.0235 m and 0.094 m, the discs of the base model.
+* Table 5-10: main-joint friction 0 ... 0.6 (case 1 is the base model).
+"""
+import os
+
+from examples import params
+
+SEEDS = (1, 2, 3)
+TABLE = os.path.join(os.path.dirname(__file__), "..", "..", "examples", "equivalent_slope", "families.table")
+BLOCKY = range(1, 23, 2)  # the base model's blocky columns
+
+
+def cases() -> list[tuple[str, dict]]:
+    found = [("base", {})]
+    roman = "I II III IV V VI VII VIII IX X XI XII XIII XIV XV XVI".split()
+    found += [(f"t57_{r}_{17 - k}-{16 - k}", {"merged_pair": 16 - k}) for k, r in enumerate(roman)]
+    found += [("t58_I_continuous", {"base_joints": "'1-22'"}), ("t58_II_none", {"base_joints": "'none'"}),
+              ("t58_III_toe", {"base_joints": "'1-3'"}),
+              ("t58_IV_pairs", {"base_joints": "'" + ";".join(f"{k}-{k + 1}" for k in BLOCKY) + "'"}),
+              ("t58_V_second_set", {"base_joints": "'" + ";".join([f"{k}-{k}" for k in BLOCKY]
+                                                                  + [f"{k}-{k}@0.13" for k in BLOCKY]) + "'"})]
+    found += [("t59_I_0.0235", {"spacing": 0.0235}), ("t59_II_0.094", {"spacing": 0.094})]
+    found += [(f"t510_{case}_mu{mu}", {"main_joint_friction": mu})
+              for case, mu in ((2, 0.0), (3, 0.176), (4, 0.26), (5, 0.36), (6, 0.46), (7, 0.56), (8, 0.58), (9, 0.6))]
+    return found
+
+
+def main() -> None:
+    base = params.EQUIVALENT_SLOPE
+    columns = ["description", "seed", "spacing", "base_joints", "merged_pair", "main_joint_friction", "out"]
+    rows = []
+    for name, change in cases():
+        for seed in SEEDS:
+            row = {"description": f"{name}_s{seed}", "seed": seed, "spacing": base["spacing"],
+                   "base_joints": repr(base["base_joints"]), "merged_pair": base["merged_pair"],
+                   "main_joint_friction": base["main_joint_friction"],
+                   "out": f"'results/equivalent_slope/families/{name}_s{seed}'", **change}
+            rows.append([str(row[c]) for c in columns])
+    width = [max(len(c), *(len(r[k]) for r in rows)) for k, c in enumerate(columns)]
+    with open(TABLE, "w") as f:
+        f.write("# Written by calibration/equivalent_slope/families.py (the cases and how we read them); run with\n"
+                "#   ./yade-batch -j2 --job-threads 1 --log 'results/equivalent_slope/families/@.log' "
+                "examples/equivalent_slope/families.table examples/equivalent_slope/run.py\n")
+        for line in [columns] + rows:
+            f.write(" ".join(cell.ljust(w) for cell, w in zip(line, width)).rstrip() + "\n")
+    print(f"{len(rows)} lines ({len(rows) // len(SEEDS)} cases x {len(SEEDS)} seeds) in {os.path.normpath(TABLE)}")
+
+
+if __name__ == "__main__":
+    main()
