@@ -131,3 +131,17 @@ def test_a_combined_yade_predicate_is_packed_with_discs_wholly_inside_it(empty_s
 
     box = packing.pack_polygon(geometry.region(outline), 0.002, 0.004, 0.18, seed=3).discs  # the bounding box's
     assert packed.discs == [d for d in box if inside(*d)] and len(packed.discs) > 0.4 * len(box)
+
+
+def test_a_kept_packing_is_read_back_to_the_last_bit(tmp_path, monkeypatch):
+    """keep=True: the second call reads the first's discs back (the same floats) without packing;
+    other inputs make another packing."""
+    monkeypatch.setenv("TOPPLING_CACHE", str(tmp_path))
+    square = geometry.region([(0, 0), (0.05, 0), (0.05, 0.05), (0, 0.05)])
+    first = packing.pack_polygon(square, 0.002, 0.004, 0.25, seed=3, keep=True)
+    again = packing.pack_polygon(square, 0.002, 0.004, 0.25, seed=3, keep=True)
+    assert first.seconds > 0 and again.seconds == 0.0
+    assert again.discs == first.discs and again.porosity == first.porosity
+    assert packing.pack_polygon(square, 0.002, 0.004, 0.25, seed=3).discs == first.discs  # what is kept is the packing
+    assert packing.pack_polygon(square, 0.002, 0.004, 0.25, seed=4, keep=True).discs != first.discs
+    assert len(list(tmp_path.glob("packings/*.json"))) == 2

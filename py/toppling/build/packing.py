@@ -8,7 +8,10 @@ packer then refuses with the porosity it could reach.
 """
 from __future__ import annotations
 
+import hashlib
+import json
 import math
+import os
 import random
 import time
 from collections import defaultdict
@@ -174,11 +177,47 @@ def z_order(discs: Sequence[tuple[float, float, float]]) -> list[tuple[float, fl
     return sorted(discs, key=key)
 
 
+def cache_folder() -> str:
+    """Where packings are kept (``$TOPPLING_CACHE/packings``, by default ``~/.cache/toppling/packings``)."""
+    return os.path.join(os.environ.get("TOPPLING_CACHE", os.path.expanduser("~/.cache/toppling")), "packings")
+
+
+def _kept_path(polygon: PolygonRegion, rmin: float, rmax: float, porosity: float, seed: int) -> str:
+    """The file of a packing: named by its inputs and by this module's source, so that a changed
+    packer makes new packings."""
+    with open(__file__, "rb") as f:
+        packer = hashlib.sha256(f.read()).hexdigest()
+    inputs = json.dumps([list(map(list, polygon.vertices)), list(map(list, polygon.holeVertices)),
+                         list(polygon.holeSizes), rmin, rmax, porosity, seed, packer])
+    return os.path.join(cache_folder(), hashlib.sha256(inputs.encode()).hexdigest()[:32] + ".json")
+
+
 def pack_polygon(polygon: PolygonRegion, rmin: float, rmax: float, porosity: float = 0.15,
-                 seed: int = 1) -> Packing:
+                 seed: int = 1, keep: bool = False) -> Packing:
     """Discs of radii uniform in rmin..rmax (rescaled by a factor ~1 to hit ``porosity``
-    exactly) filling ``polygon``; reproducible from ``seed``. Runs in a scene of its own."""
+    exactly) filling ``polygon``; reproducible from ``seed``. Runs in a scene of its own. With
+    ``keep``, the packing is kept in ``cache_folder()`` and a later call with the same inputs
+    reads it back (the same discs to the last bit) instead of packing again: the cases of a
+    study share their packings."""
     _check_inputs(polygon, rmin, rmax, porosity)
+    if not keep:
+        return _pack(polygon, rmin, rmax, porosity, seed)
+    path = _kept_path(polygon, rmin, rmax, porosity, seed)
+    if os.path.exists(path):
+        with open(path) as f:
+            kept = json.load(f)
+        return Packing([tuple(d) for d in kept["discs"]], kept["porosity"], kept["mean_overlap"], 0.0, kept["steps"])
+    packed = _pack(polygon, rmin, rmax, porosity, seed)
+    os.makedirs(cache_folder(), exist_ok=True)
+    aside = f"{path}.{os.getpid()}"  # written aside, then renamed: a run killed meanwhile leaves no half file
+    with open(aside, "w") as f:
+        json.dump({"discs": packed.discs, "porosity": packed.porosity, "mean_overlap": packed.mean_overlap,
+                   "steps": packed.steps}, f)
+    os.replace(aside, path)
+    return packed
+
+
+def _pack(polygon: PolygonRegion, rmin: float, rmax: float, porosity: float, seed: int) -> Packing:
     started = time.perf_counter()
     rng = random.Random(seed)
     radii = _radii(polygon.area(), rmin, rmax, porosity, rng)

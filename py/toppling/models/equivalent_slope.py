@@ -157,7 +157,7 @@ class EquivalentSlope:
     def build(self) -> columns.ColumnLayout:
         """The bonded rock (no joints yet: ``settled`` installs them) in an empty scene; returns its layout."""
         discs = packing.pack_polygon(geometry.region(self.section()), self.rmin, self.rmax, self.porosity,
-                                     seed=self.seed).discs
+                                     seed=self.seed, keep=True).discs
         discs = packing.shrink_overlaps(discs)
         ids = add_discs(packing.z_order(discs) if self.z_order else discs, ParallelBondMat(**self.rock))
         O.engines = engines.engines(gravity=(0, -engines.G, 0), local_damping=self.damping, safety=self.timestep_safety)

@@ -133,7 +133,7 @@ class TiltingTable:
         """The discs filling the columns' outline, overlaps shrunk (a stress-free bond would
         otherwise hold the packing's overlap force in tension from the first step)."""
         discs = packing.pack_polygon(geometry.region(layout.section()), self.rmin, self.rmax, self.porosity,
-                                     seed=self.seed).discs
+                                     seed=self.seed, keep=True).discs
         discs = packing.shrink_overlaps(discs)
         return packing.z_order(discs) if self.z_order else discs
 
