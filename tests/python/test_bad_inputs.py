@@ -8,6 +8,7 @@ from types import SimpleNamespace
 
 import pytest
 from conftest import REPO, ROCK
+from examples import params
 from yade import O, pack
 from yade.utils import readParamsFromTable
 from yade.wrapper import JointSetGeometry, ParallelBondMat, PolygonRegion, SmoothJointMat
@@ -16,12 +17,18 @@ from toppling.build import bonding, boundary, columns, engines, joints, packing
 from toppling.build.discs import disc
 from toppling.io.params import check
 from toppling.load import tilting
+from toppling.models import equivalent_slope
 from toppling.run import tilt_run
 from toppling.run.checkpoint import Checkpoint
 from toppling.run.steps import run_checked, run_steps
 
 SQUARE = [(0, 0), (1, 0), (1, 1), (0, 1)]
 HOLE = [(0.4, 0.4), (0.6, 0.4), (0.6, 0.6), (0.4, 0.6)]
+def slope(**changes):
+    """The equivalent slope's base model with ``changes`` to its parameters."""
+    return equivalent_slope.from_params(SimpleNamespace(**{**params.EQUIVALENT_SLOPE, **changes}), params)
+
+
 PROTOCOL = dict(start_tilt=20.0, step=2.0, max_tilt=40.0, tilt_rate=50.0, stage_rate=10.0, damping=0.0,
                 settle_damping=0.7, arrest_time=0.0, post_failure_time=0.3, checkpoint_every=600.0)
 
@@ -114,6 +121,15 @@ BAD = [  # label, the call, what the error says
     ("tilt 95 deg", lambda: tilting.set_tilt(95), "tilt = 95 is invalid: it must be in [0, 90)"),
     ("start tilt 90 deg", lambda: tilt_run.TiltProtocol(**{**PROTOCOL, "start_tilt": 90.0}),
      "start_tilt = 90.0 is invalid: it must be in [0, 90)"),
+    ("settle tilt 95 deg", lambda: tilt_run.TiltProtocol(**{**PROTOCOL, "settle_tilt": 95.0}),
+     "settle_tilt = 95.0 is invalid: it must be in [0, 90)"),
+    ("slope face leaning out beyond the main joints",
+     lambda: equivalent_slope.SlopeShape(height=0.475, joint_dip_deg=55, face_deg=150, top_deg=8, spacing=0.047),
+     "face_deg = 150 is invalid: it must be in (55, 145)"),
+    ("base joint beyond the last column", lambda: slope(base_joints="3-40"),
+     "base_joints[0] = columns 3-40 is invalid: they must be columns 1 <= first <= last <= 22"),
+    ("base joints unreadable", lambda: slope(base_joints="x-1"), "base_joints = 'x-1' is invalid"),
+    ("slope strength factor 0", lambda: slope(strength_factor=0), "strength_factor = 0 is invalid: it must be in (0, inf)"),
     ("start tilt negative", lambda: tilt_run.TiltProtocol(**{**PROTOCOL, "start_tilt": -5.0}),
      "start_tilt = -5.0 is invalid: it must be in [0, 90)"),
     ("max tilt below the start tilt", lambda: tilt_run.TiltProtocol(**{**PROTOCOL, "max_tilt": 10.0}),

@@ -100,7 +100,7 @@ def test_a_run_killed_at_random_moments_resumes_to_the_uninterrupted_runs_result
     command, env = yade_command(EXAMPLE, tmp_path, **SMALL_RUN)
     rng = random.Random(100)
     kills = [killed(command, env, tmp_path / "out", after, rng.uniform(0.2, 3.0), saving)
-             for after, saving in (("level table", False), ("tilt ", True), ("tilt ", False))]  # ramp, stages
+             for after, saving in (("settled at", False), ("tilt ", True), ("tilt ", False))]  # ramp, stages
     assert all(kills), "the run ended before it was killed: kill it sooner"
     proc = subprocess.run(command, env=env, capture_output=True, text=True, timeout=600)
     assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-3000:]

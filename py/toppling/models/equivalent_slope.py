@@ -81,9 +81,9 @@ class SlopeShape:
     def __post_init__(self):
         require("height", self.height, "(0, inf)")
         require("joint_dip_deg", self.joint_dip_deg, "(0, 90)")
-        require("top_deg", self.top_deg, f"[0, {90 - self.joint_dip_deg})")  # the top must fall towards the table
+        require("top_deg", self.top_deg, f"[0, {90 - self.joint_dip_deg:g})")  # the top must fall towards the table
         # the face must rise from the table plane and lean no further out than the main joints
-        require("face_deg", self.face_deg, f"({self.joint_dip_deg}, {90 + self.joint_dip_deg})")
+        require("face_deg", self.face_deg, f"({self.joint_dip_deg:g}, {90 + self.joint_dip_deg:g})")
         require("spacing", self.spacing, "(0, inf)")
 
     @property

@@ -59,7 +59,7 @@ class TiltProtocol:
 
     def __post_init__(self):
         require("settle_tilt", self.settle_tilt, "[0, 90)")
-        require("start_tilt", self.start_tilt, f"[{self.settle_tilt}, 90)")  # settle_tilt <= start_tilt
+        require("start_tilt", self.start_tilt, f"[{self.settle_tilt:g}, 90)")  # settle_tilt <= start_tilt
         require("max_tilt", self.max_tilt, f"[{self.start_tilt}, 90)")  # start_tilt <= max_tilt
         for name in ("step", "tilt_rate", "checkpoint_every"):
             require(name, getattr(self, name), "(0, inf)")
