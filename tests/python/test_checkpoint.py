@@ -1,5 +1,6 @@
 """A checkpoint is one unit: the scene and the driver's state inside it come from one moment,
 however the run that saved it was stopped."""
+import bz2
 import json
 import os
 import random
@@ -86,3 +87,12 @@ def test_a_run_killed_at_random_moments_always_leaves_a_whole_checkpoint(tmp_pat
         state = Checkpoint(str(folder)).load()
         assert state["iter"] == O.iter and state["y"] == O.bodies[0].state.pos[1]
     O.reset()
+
+
+def test_a_checkpoint_that_cannot_be_loaded_is_refused_by_name(empty_scene, tmp_path):
+    """A scene file YADE cannot read (another build's classes, a damaged file) stops with the file and the way on."""
+    checkpoint = Checkpoint(str(tmp_path))
+    (tmp_path / "checkpoint.json").write_text("{}")
+    (tmp_path / "checkpoint.yade.bz2").write_bytes(bz2.compress(b"<not a YADE scene>"))
+    with pytest.raises(ValueError, match="checkpoint.yade.bz2 cannot be loaded .*resume=0 starts afresh"):
+        checkpoint.load()

@@ -83,7 +83,11 @@ class Checkpoint:
     def load(self) -> dict[str, Any]:
         if not self.exists():
             raise FileNotFoundError(f"no checkpoint in {os.path.dirname(self.scene_path)}: run without resume first")
-        O.load(self.scene_path)
+        try:
+            O.load(self.scene_path)
+        except RuntimeError as e:  # YADE's own words ("unregistered class") name no file and no way on
+            raise ValueError(f"{self.scene_path} cannot be loaded ({e}): it was saved by another build of YADE or "
+                             "toppling; resume=0 starts afresh and discards it") from None
         if self.TAG not in O.tags.keys():
             raise ValueError(f"{self.scene_path} holds a scene without a run's state (saved by O.save, or by an "
                              "older toppling): it cannot be resumed; resume=0 starts afresh and discards it")
