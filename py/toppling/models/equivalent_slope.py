@@ -147,7 +147,7 @@ class EquivalentSlope:
 
     def section(self) -> list[tuple[float, float]]:
         """The whole section, counter-clockwise: the foundation's base and right side, the columns."""
-        toe, foot, _ = self.foundation()
+        foot = self.foundation()[1]
         columns_ = self.layout.section()  # from the back column's foot on the table, to the toe, up the steps
         return [columns_[0], foot] + columns_[1:]
 
@@ -214,7 +214,8 @@ def from_params(p: Any, thesis: Any) -> EquivalentSlope:
     rock["bondTensileStrength"] *= p.strength_factor
     rock["bondCohesion"] *= p.strength_factor
     joint = thesis.TABLE_5_6
-    shape = SlopeShape(**{**thesis.EQUIVALENT_SLOPE_SHAPE, "spacing": p.spacing or thesis.EQUIVALENT_SLOPE_SHAPE["spacing"]})
+    thesis_shape = thesis.EQUIVALENT_SLOPE_SHAPE
+    shape = SlopeShape(**{**thesis_shape, "spacing": p.spacing or thesis_shape["spacing"]})
     base = None if p.base_joints == "every_other" else parse_base_joints(p.base_joints)
     if p.merged_pair:
         count = shape.outline().layout().count

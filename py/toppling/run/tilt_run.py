@@ -34,8 +34,9 @@ class TiltProtocol:
     slope built in its table frame settles at its own tilt), then turns at ``tilt_rate`` [deg/s]
     to ``start_tilt`` [deg], then ``step`` [deg] per stage, each step ramped at ``stage_rate``
     [deg/s] (0: at once), up to ``max_tilt``. ``settle_damping``: NewtonIntegrator's local
-    damping while it settles, ``damping`` while it tilts. ``arrest_time`` [s]: a failure that comes to rest within it is
-    not the slope's and the tilt goes on (0: the first failing stage is the failure).
+    damping while it settles, ``damping`` while it tilts. ``arrest_time`` [s]: a failure that
+    comes to rest within it is not the slope's and the tilt goes on (0: the first failing stage
+    is the failure).
     ``post_failure_time`` [s]: the run after the failure. ``checkpoint_every`` [wall s].
     ``max_wall_time`` [wall s, over every run of one out folder]: the run stops there, saved,
     with the reason in its summary, and the same command with a larger one continues it (0: no
