@@ -72,3 +72,12 @@ def test_the_scene_is_bonded_rock_fixed_on_its_foundation_and_jointed_once_settl
         else:  # the base joints lie on the table plane, each under a blocky column
             assert abs(mid[1]) < model.rmax
             assert any(layout.column_of(mid[0] + dx) % 2 == 1 for dx in (-model.rmax, 0, model.rmax))
+
+
+def test_main_joints_reach_the_horizontal_base_when_they_run_into_the_foundation():
+    through = base_model(joints_into_foundation=1).main_joints()
+    toe, foot, _ = base_model().foundation()
+    for (x, y), top in zip(through.segmentStarts, through.segmentEnds):
+        # the start lies on the horizontal base (the line from the toe to the right side's foot)
+        assert y == pytest.approx((x - toe[0]) * (foot[1] - toe[1]) / (foot[0] - toe[0]), abs=1e-12) and top[1] > 0
+    assert all(y == 0 for _, y in base_model().main_joints().segmentStarts)

@@ -107,7 +107,10 @@ class EquivalentSlope:
     """The model: ``shape``, ``rock`` (ParallelBondMat's keyword arguments, ``thickness``
     included), bonds between discs within ``bond_gap`` [m], main joints of ``main`` and base
     joints (``base_joints``; None: every other column) of ``base`` material with ``joint_gap``
-    [m]; discs R ``rmin``-``rmax`` [m] packed at ``porosity`` with ``seed``."""
+    [m]; discs R ``rmin``-``rmax`` [m] packed at ``porosity`` with ``seed``. With
+    ``joints_into_foundation`` the main joints run on down to the horizontal base (the other
+    reading of the thesis' foundation: the flexural columns rooted at the held base, not at the
+    table plane)."""
     shape: SlopeShape
     rock: dict[str, Any]
     main: JointMaterial
@@ -119,6 +122,7 @@ class EquivalentSlope:
     porosity: float
     seed: int
     base_joints: list[BaseJoint] | None = None
+    joints_into_foundation: bool = False
     z_order: bool = False
     timestep_safety: float = 0.5
     damping: float = 0.0
@@ -171,12 +175,14 @@ class EquivalentSlope:
         return self.layout
 
     def main_joints(self) -> JointSetGeometry:
-        """The joints between neighbouring columns, from the table plane up to the taller one's top."""
-        layout = self.layout
-        tops = [max(layout.heights[k - 1], layout.heights[k]) for k in range(1, layout.count)]
-        xs = [layout.span(k)[0] for k in range(1, layout.count)]
-        return JointSetGeometry(dip=90, segmentStarts=[(x, 0) for x in xs],
-                                segmentEnds=[(x, top) for x, top in zip(xs, tops)])
+        """The joints between neighbouring columns, from the table plane (or the horizontal base,
+        ``joints_into_foundation``) up to the taller one's top."""
+        layout, slope = self.layout, math.tan(math.radians(self.shape.tilt_deg))
+        ks = range(1, layout.count)
+        tops = [max(layout.heights[k - 1], layout.heights[k]) for k in ks]
+        xs = [layout.span(k)[0] for k in ks]
+        bottoms = [-k * layout.width * slope if self.joints_into_foundation else 0.0 for k in ks]
+        return JointSetGeometry(dip=90, segmentStarts=list(zip(xs, bottoms)), segmentEnds=list(zip(xs, tops)))
 
     def base_joint_set(self) -> JointSetGeometry:
         spans = [(self.layout.span(j.last)[0], self.layout.span(j.first)[1], j.height) for j in self.base_joints]
@@ -209,6 +215,7 @@ def from_params(p: Any, thesis: Any) -> EquivalentSlope:
     (``parse_base_joints``), ``merged_pair`` N1 > 0 merges Table 5-7's pair (N1 + 1)-N1."""
     require("strength_factor", p.strength_factor, "(0, inf)")
     require("main_joint_friction", p.main_joint_friction, "[0, inf)")
+    require("joints_into_foundation", p.joints_into_foundation, "whole [0, 1]")
     require("joint_stiffness_scale", p.joint_stiffness_scale, "(0, 1]")
     rock = dict(thesis.TABLE_5_5)
     rock["bondTensileStrength"] *= p.strength_factor
@@ -226,7 +233,8 @@ def from_params(p: Any, thesis: Any) -> EquivalentSlope:
         main=JointMaterial(p.joint_stiffness_scale * joint["main"][0], p.main_joint_friction),
         base=JointMaterial(p.joint_stiffness_scale * joint["base"][0], joint["base"][1]),
         joint_gap=joint["gap"], bond_gap=thesis.TABLE_5_5_BOND_GAP, rmin=p.rmin, rmax=p.rmax, porosity=p.porosity,
-        seed=p.seed, base_joints=base, z_order=bool(p.z_order), timestep_safety=p.timestep_safety,
+        seed=p.seed, base_joints=base, joints_into_foundation=bool(p.joints_into_foundation), z_order=bool(p.z_order),
+        timestep_safety=p.timestep_safety,
         damping=p.damping)
 
 
