@@ -55,14 +55,14 @@ def model_text(model: tuple) -> str:
 
 def main(folder: str, patterns: Sequence[str] = ("*",)) -> None:
     runs = read_summaries(folder, patterns)
-    print("| run | seed | failed | planes | φ (°) | φ overall (°) | S/H | T/H | stable columns | tensile / shear breaks | wall (s) |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|")
+    print("| run | seed | failed | planes | φ (°) | φ overall (°) | S/H | T/H | stable columns | tensile / shear breaks | steps | wall (s) |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|")
     for name, s in runs.items():
         f = figures(s)
         stable = ", ".join(map(str, s.get("stable_zone_columns") or [])) or "-"
         print(f"| {name} | {s['inputs']['seed']} | {bool(s.get('failed'))} | {f['planes']} | {fmt(s.get('phi_deg', []))} | "
               f"{fmt(f['phi_overall_deg'])} | {fmt(f['s_over_h'], 2)} | {fmt(f['t_over_h'], 2)} | {stable} | "
-              f"{s.get('tensile_breaks')} / {s.get('shear_breaks')} | {s.get('wall_time', 0):.0f} |")
+              f"{s.get('tensile_breaks')} / {s.get('shear_breaks')} | {s.get('steps')} | {s.get('wall_time', 0):.0f} |")
     models: dict[tuple, list[dict]] = {}
     for s in runs.values():
         models.setdefault(model_of(s), []).append(figures(s))

@@ -35,14 +35,11 @@ import math
 from dataclasses import dataclass, field
 from typing import Any, Sequence
 
-from yade import O
-from yade.wrapper import JointSetGeometry, ParallelBondMat
+from yade.wrapper import JointSetGeometry
 
-from toppling.build import bonding, boundary, columns, engines, geometry, joints, packing
-from toppling.build.discs import add_discs
+from toppling.build import columns, engines, geometry, joints, packing
 from toppling.checks import require
-from toppling.load import tilting
-from toppling.models.tilting_table import JointMaterial, Outline, column_top_bands
+from toppling.models.tilting_table import JointMaterial, Outline, bonded_rock, column_top_bands, packed_discs
 from toppling.run import tilt_run
 
 
@@ -160,17 +157,10 @@ class EquivalentSlope:
 
     def build(self) -> columns.ColumnLayout:
         """The bonded rock (no joints yet: ``settled`` installs them) in an empty scene; returns its layout."""
-        discs = packing.pack_polygon(geometry.region(self.section()), self.rmin, self.rmax, self.porosity,
-                                     seed=self.seed, keep=True).discs
-        discs = packing.shrink_overlaps(discs)
-        ids = add_discs(packing.z_order(discs) if self.z_order else discs, ParallelBondMat(**self.rock))
-        O.engines = engines.engines(gravity=(0, -engines.G, 0), local_damping=self.damping, safety=self.timestep_safety)
-        floaters = set(bonding.remove_floaters(self.bond_gap, ids=ids))
-        ids = [i for i in ids if i not in floaters]
+        discs = packed_discs(self.section(), self.rmin, self.rmax, self.porosity, self.seed, self.z_order)
         toe, foot, back = self.foundation()
-        boundary.fix(boundary.near([(toe, foot), (foot, back)], self.rmax, ids), "xy")
-        bonding.bond_within_gap(self.bond_gap, ids)
-        tilting.set_tilt(self.shape.tilt_deg)
+        ids = bonded_rock(discs, self.rock, self.bond_gap, [(toe, foot), (foot, back)], self.rmax, self.damping,
+                          self.timestep_safety)
         print(f"equivalent slope: {len(ids)} discs, {self.layout.count} columns", flush=True)
         return self.layout
 

@@ -116,26 +116,12 @@ class TiltingTable:
         return {k: layout.stacked_blocks(k, self.block_length, phases[k - 1]) for k in range(1, layout.count + 1)}
 
     def bonded_rock(self, discs: list[tuple[float, float, float]], table_surface: tuple) -> list[int]:
-        """The discs (x, y, r) as the model's rock in a scene with its engines: discs without a
-        bond partner dropped, those within Rmax of ``table_surface`` (a segment) fixed, all bonded."""
-        ids = add_discs(discs, ParallelBondMat(**self.rock))
-        O.engines = engines.engines(gravity=(0, -engines.G, 0), local_damping=self.damping,
-                                    safety=self.timestep_safety)
-        floaters = set(bonding.remove_floaters(self.bond_gap, ids=ids))
-        ids = [i for i in ids if i not in floaters]
-        boundary.fix(boundary.near([table_surface], self.rmax, ids), "xy")
-        # Bond at once: the packer leaves the discs relaxed, and without its walls loose discs
-        # would slump off the steps (the thesis settles inside walls, §5.3.2).
-        bonding.bond_within_gap(self.bond_gap, ids)
-        return ids
+        """The discs (x, y, r) as the model's rock (``bonded_rock``), held near ``table_surface``."""
+        return bonded_rock(discs, self.rock, self.bond_gap, [table_surface], self.rmax, self.damping,
+                           self.timestep_safety)
 
     def pack(self, layout: columns.ColumnLayout) -> list[tuple[float, float, float]]:
-        """The discs filling the columns' outline, overlaps shrunk (a stress-free bond would
-        otherwise hold the packing's overlap force in tension from the first step)."""
-        discs = packing.pack_polygon(geometry.region(layout.section()), self.rmin, self.rmax, self.porosity,
-                                     seed=self.seed, keep=True).discs
-        discs = packing.shrink_overlaps(discs)
-        return packing.z_order(discs) if self.z_order else discs
+        return packed_discs(layout.section(), self.rmin, self.rmax, self.porosity, self.seed, self.z_order)
 
     def expected_discs(self) -> int:
         outline = geometry.region(self.outline.layout().section())
@@ -156,6 +142,31 @@ class TiltingTable:
 
     def column_top_bands(self, layout: columns.ColumnLayout) -> dict[str, list[int]]:
         return column_top_bands(layout, self.rmax)
+
+
+def packed_discs(section: list[tuple[float, float]], rmin: float, rmax: float, porosity: float, seed: int,
+                 z_order: bool) -> list[tuple[float, float, float]]:
+    """The discs filling ``section`` (a kept packing), overlaps shrunk (a stress-free bond would
+    otherwise hold the packing's overlap force in tension from the first step), in Z-order if asked."""
+    discs = packing.pack_polygon(geometry.region(section), rmin, rmax, porosity, seed=seed, keep=True).discs
+    discs = packing.shrink_overlaps(discs)
+    return packing.z_order(discs) if z_order else discs
+
+
+def bonded_rock(discs: list[tuple[float, float, float]], rock: dict[str, Any], bond_gap: float,
+                held: list[tuple], rmax: float, damping: float, safety: float) -> list[int]:
+    """The discs (x, y, r) as rock of ParallelBondMat(**``rock``) in a scene with its engines: discs
+    without a bond partner within ``bond_gap`` dropped, those within ``rmax`` of the ``held``
+    segments fixed, all bonded."""
+    ids = add_discs(discs, ParallelBondMat(**rock))
+    O.engines = engines.engines(gravity=(0, -engines.G, 0), local_damping=damping, safety=safety)
+    floaters = set(bonding.remove_floaters(bond_gap, ids=ids))
+    ids = [i for i in ids if i not in floaters]
+    boundary.fix(boundary.near(held, rmax, ids), "xy")
+    # Bond at once: the packer leaves the discs relaxed, and without its walls loose discs
+    # would slump off the steps (the thesis settles inside walls, §5.3.2).
+    bonding.bond_within_gap(bond_gap, ids)
+    return ids
 
 
 def column_top_bands(layout: columns.ColumnLayout, rmax: float) -> dict[str, list[int]]:
