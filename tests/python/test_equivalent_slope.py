@@ -81,3 +81,20 @@ def test_main_joints_reach_the_horizontal_base_when_they_run_into_the_foundation
         # the start lies on the horizontal base (the line from the toe to the right side's foot)
         assert y == pytest.approx((x - toe[0]) * (foot[1] - toe[1]) / (foot[0] - toe[0]), abs=1e-12) and top[1] > 0
     assert all(y == 0 for _, y in base_model().main_joints().segmentStarts)
+
+
+def test_limit_equilibrium_of_the_slope_uses_the_runs_failure_plane(tmp_path):
+    """examples/equivalent_slope/lem.py: the thesis' 15° plane without a run, the run's φ and
+    friction with one; both methods answer."""
+    import importlib
+    import json
+    lem = importlib.import_module("examples.equivalent_slope.lem")
+    alone = lem.main(None)
+    assert alone["failure_plane_deg"] == 15 and alone["dem"] is None
+    assert alone["flexural"]["factor_of_safety"] > 1 and 0 < alone["goodman_bray"]["limiting_friction_deg"] < 90
+    summary = dict(inputs={**params.EQUIVALENT_SLOPE, "main_joint_friction": 0.3}, failed=True, phi_overall_deg=20.0,
+                   s_over_h=0.8, t_over_h=0.2, stable_zone_columns=[9, 10])
+    (tmp_path / "summary.json").write_text(json.dumps(summary))
+    run = lem.main(str(tmp_path))
+    assert run["failure_plane_deg"] == 20.0 and run["dem"]["s_over_h"] == 0.8
+    assert run["goodman_bray"]["factor_of_safety"] > alone["goodman_bray"]["factor_of_safety"]  # friction 0.3 > 0.12

@@ -10,12 +10,12 @@ from __future__ import annotations
 
 import argparse
 import json
-import math
 import sys
 from typing import Any
 
 from toppling.lem import flexural, goodman_bray
 from toppling.lem.geometry import SlopeGeometry
+from toppling.lem.report import json_text
 
 GEOMETRY = ("height", "face_deg", "top_deg", "joint_dip_deg", "failure_plane_deg", "spacing")
 BLOCKS = ("heights", "width", "base_dip_deg", "a1", "a2", "crest")
@@ -74,17 +74,6 @@ def _refuse_unknown(inputs: dict[str, Any], known: tuple[str, ...]) -> None:
         raise ValueError(f"unknown input keys {unknown}; known: {sorted(known)}")
 
 
-def _finite(value: Any) -> Any:
-    """JSON has no infinity: a force no support can give is printed as null."""
-    if isinstance(value, float) and not math.isfinite(value):
-        return None
-    if isinstance(value, dict):
-        return {k: _finite(v) for k, v in value.items()}
-    if isinstance(value, list):
-        return [_finite(v) for v in value]
-    return value
-
-
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(prog="python3 -m toppling.lem", description=__doc__.splitlines()[0],
                                      epilog=HELP, formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -98,7 +87,7 @@ def main(argv: list[str] | None = None) -> int:
     except ValueError as error:
         print(f"{args.method}: {error}", file=sys.stderr)
         return 2
-    print(json.dumps(_finite(result), indent=1))
+    print(json_text(result))
     return 0
 
 

@@ -74,11 +74,21 @@ def toe_force(slope: SlopeGeometry, rock: Rock) -> float:
 
 
 def factor_of_safety(slope: SlopeGeometry, rock: Rock, tolerance: float = 1e-4) -> float:
-    """The factor F that, dividing the tensile strength and tan φ alike, brings P0 to 0 (bisection)."""
-    low, high = 1e-3, 1e3
-    if toe_force(slope, rock.reduced(low)) > 0 or toe_force(slope, rock.reduced(high)) <= 0:
-        raise ValueError("P0 does not change sign for strength factors in [0.001, 1000]")
+    """The factor F that, dividing the tensile strength and tan φ alike, brings P0 to 0: doubled
+    (or halved) from 1 until P0 changes sign, then bisected."""
+    def fails(factor: float) -> bool:
+        return toe_force(slope, rock.reduced(factor)) > 0
+
+    low = high = 1.0
+    while not fails(high):
+        low, high = high, high * 2
+        if high > 1e6:
+            raise ValueError("the slope stands with its strengths divided by 1e6: no factor of safety")
+    while fails(low):
+        low, high = low / 2, low
+        if low < 1e-6:
+            raise ValueError("the slope fails with its strengths multiplied by 1e6: no factor of safety")
     while high - low > tolerance * low:
         mid = math.sqrt(low * high)
-        low, high = (mid, high) if toe_force(slope, rock.reduced(mid)) <= 0 else (low, mid)
+        low, high = (mid, high) if not fails(mid) else (low, mid)
     return math.sqrt(low * high)
