@@ -7,7 +7,8 @@ The package by role:
 * :mod:`toppling.run`: steps, staged tilting runs, checkpoints that resume, progress, monitoring points
 * :mod:`toppling.analyse`: failure points and surfaces, zones, S/H and T/H, statistics over runs
 * :mod:`toppling.io`: summary.json, plots, ParaView series, reading a run folder back
-* :mod:`toppling.models`: parametrised scenes (tilting table, block on an incline, specimen)
+* :mod:`toppling.models`: parametrised scenes (tilting table, equivalent slope, block on an incline, specimen)
+* :mod:`toppling.lem`: limit equilibrium (Goodman and Bray, Aydan and Kawamoto), plain Python
 
 The names below are re-exported here, loaded on first use (so that ``toppling.analyse`` and
 ``toppling.io.output`` stay usable from a plain Python without YADE). The C++ classes
