@@ -56,8 +56,7 @@ while O.time < table.duration and not (history and failed(history[-1])):
     check_stable()
 
 _, translation, rotation = history[-1]
-slides, topples = translation > 0.1 * table.b, abs(rotation) > 5.0
-mode = "slide+topple" if slides and topples else "slide" if slides else "topple" if topples else "stable"
+mode = incline.mode(translation, rotation, table.b)
 t_end = history[-1][0] - t_tilt
 # Sliding from rest at constant acceleration: x = a t^2 / 2 (closed form g (sin a - tan phi cos a)).
 acceleration = output.comparison(2 * translation / t_end**2,

@@ -6,9 +6,10 @@ from typing import Sequence
 
 from yade import O, utils
 from yade.wrapper import (Ip2_ParallelBondMat_ParallelBondMat_ParallelBondPhys,
-                          JointSetGeometry, JointSystem, SmoothJointMat)
+                          JointSetGeometry, JointSystem, SmoothJointMat, SmoothJointPhys)
 
 from toppling.build.engines import functor, limit_timestep
+from toppling.checks import require
 
 
 def rock_functor() -> Ip2_ParallelBondMat_ParallelBondMat_ParallelBondPhys:
@@ -127,3 +128,17 @@ def cut_bonds(geometry: JointSetGeometry, lo, hi) -> int:
     for i, j in pairs:
         O.interactions.erase(i, j)  # the collider makes them plain contacts again
     return len(pairs)
+
+
+def bond_contacts(tensile_strength: float, cohesion: float) -> int:
+    """Bond every joint contact that exists now (a cemented joint), keeping the forces it
+    carries: installed after the scene has settled, the bonds start from its settled state
+    instead of resisting the settling. Returns how many were bonded."""
+    require("tensile_strength", tensile_strength, "[0, inf)")
+    require("cohesion", cohesion, "[0, inf)")
+    count = 0
+    for i in O.interactions:
+        if isinstance(i.phys, SmoothJointPhys) and i.phys.jointNormalForce >= 0:
+            i.phys.tensileStrength, i.phys.cohesion, i.phys.bondState = tensile_strength, cohesion, 1
+            count += 1
+    return count

@@ -30,11 +30,11 @@ BOND_GAP = 0.05  # x Rmin
 
 
 def build(b: float, h: float, rmin: float, rmax: float, rock: dict, joint_friction_deg: float,
-          smooth: bool = True, porosity: float = 0.2, seed: int = 1) -> BlockOnBase:
+          smooth: bool = True, porosity: float = 0.2, seed: int = 1, joint_stiffness_scale: float = 1.0) -> BlockOnBase:
     """Pack, bond (unbreakable bonds) and joint a b x h block on a base; gravity vertical.
 
-    ``rock``: ParallelBondMat parameters. The joint has the bonds' stiffness per area and
-    friction ``joint_friction_deg``; ``smooth=False`` only cuts the bonds across it (plain
+    ``rock``: ParallelBondMat parameters. The joint has the bonds' stiffness per area (times
+    ``joint_stiffness_scale``) and friction ``joint_friction_deg``; ``smooth=False`` only cuts the bonds across it (plain
     disc contacts with that friction).
     """
     width, thickness, x0 = 2 * b + 2 * h, 10 * rmax, 0.5 * b  # room downhill (+x) to slide or topple
@@ -50,7 +50,7 @@ def build(b: float, h: float, rmin: float, rmax: float, rock: dict, joint_fricti
     bonding.bond_within_gap(BOND_GAP * rmin)
     interface, box = JointSetGeometry(origin=(0, 0), dip=0), ((-1, -1), (width + 1, h + 1))
     if smooth:
-        stiffness = mat.bondYoung / (2 * rmin)
+        stiffness = joint_stiffness_scale * mat.bondYoung / (2 * rmin)
         mechanics = SmoothJointMat(normalStiffness=stiffness, shearStiffness=stiffness / mat.bondKnKs,
                                    frictionAngle=math.radians(joint_friction_deg))
         joints.install_joints([(interface, mechanics)], *box)
@@ -79,3 +79,10 @@ def mean_spin_deg(ids) -> float:
         axis, angle = O.bodies[i].state.ori.toAxisAngle()
         total += angle * axis[2]
     return math.degrees(total / len(ids))
+
+
+def mode(translation: float, rotation_deg: float, b: float) -> str:
+    """How a block b wide moved: slide if its toe went further than b/10 along the incline,
+    topple if it turned more than 5°, both, or stable."""
+    slides, topples = translation > 0.1 * b, abs(rotation_deg) > 5.0
+    return "slide+topple" if slides and topples else "slide" if slides else "topple" if topples else "stable"
