@@ -207,6 +207,7 @@ def from_params(p: Any, thesis: Any) -> EquivalentSlope:
     require("main_joint_friction", p.main_joint_friction, "[0, inf)")
     require("joints_into_foundation", p.joints_into_foundation, "whole [0, 1]")
     require("joint_stiffness_scale", p.joint_stiffness_scale, "(0, 1]")
+    require("joint_gap", p.joint_gap, "[0, inf)")
     rock = dict(thesis.TABLE_5_5)
     rock["bondTensileStrength"] *= p.strength_factor
     rock["bondCohesion"] *= p.strength_factor
@@ -222,7 +223,7 @@ def from_params(p: Any, thesis: Any) -> EquivalentSlope:
         shape=shape, rock=rock,
         main=JointMaterial(p.joint_stiffness_scale * joint["main"][0], p.main_joint_friction),
         base=JointMaterial(p.joint_stiffness_scale * joint["base"][0], joint["base"][1]),
-        joint_gap=joint["gap"], bond_gap=thesis.TABLE_5_5_BOND_GAP, rmin=p.rmin, rmax=p.rmax, porosity=p.porosity,
+        joint_gap=p.joint_gap, bond_gap=thesis.TABLE_5_5_BOND_GAP, rmin=p.rmin, rmax=p.rmax, porosity=p.porosity,
         seed=p.seed, base_joints=base, joints_into_foundation=bool(p.joints_into_foundation), z_order=bool(p.z_order),
         timestep_safety=p.timestep_safety,
         damping=p.damping)
