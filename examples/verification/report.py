@@ -20,6 +20,7 @@ CASES = [  # (label, example, parameters)
     ("bond bent: peak moment", "bond_strength", {"load": "bend"}),
     ("bond sheared: peak force", "bond_strength", {"load": "shear"}),
     ("bond sheared at 2 MPa compression", "bond_strength", {"load": "shear", "compression": 2e6}),
+    ("strength reduction: block on a joint, FS = tan φ / tan α", "strength_reduction", {"alpha": 20.0, "phi": 30.0}),
 ]
 
 
@@ -45,6 +46,8 @@ def main() -> int:
             notes.append(f"{s['bounces']} bounces, max height error {s['bounce_height_max_rel_error']:.1e}")
         if "mode" in s:
             notes.append(f"broke in {s['mode']}")
+        if "bracket" in s:
+            notes.append(f"bracket {s['bracket'][0]:.4f}-{s['bracket'][1]:.4f} after {len(s['trials'])} trials")
         if "thesis_hdpac_mm" in s:
             notes.append(f"thesis HDPAC {s['thesis_hdpac_mm']} mm")
         print(f"| {label} | {s['measured']:.6g} {s['unit']} | {s['reference']:.6g} {s['unit']} | "

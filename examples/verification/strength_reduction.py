@@ -60,7 +60,8 @@ else:
 # the mode at the first failing factor, which may only creep: its toe slid further than its turn would carry it
 translation, turn = O.bodies[setup.toe].state.pos[0] - x_start, math.radians(incline.mean_spin_deg(setup.block))
 mode = "slide" if translation > table.b * abs(turn) else "topple"
-output.write_summary(table.out, output.table_inputs(table), factor_of_safety=fs, bracket=bracket,
+match = output.comparison(fs, closed, "-") if fs is not None else {}
+output.write_summary(table.out, output.table_inputs(table), **match, factor_of_safety=fs, bracket=bracket,
                      closed_form=closed, mode_at_failure=mode, weight=weight, joint_area=area,
                      trials=[vars(t) for t in search.trials], discs=len(setup.block) + len(setup.base), steps=O.iter)
 print(f"factor of safety {'none' if fs is None else f'{fs:.4f}'} (bracket {bracket}), closed form {closed:.4f}; "
