@@ -102,3 +102,9 @@ EQUIVALENT_SLOPE = dict(
     timestep_safety=0.8, damping=0.0, settle_damping=0.7,
     chunk=0.02, rest_speed=1e-3, fail_displacement=0.05, max_stage_time=2.0, fail_columns=2,  # s, m/s, m, s, -
     post_failure_time=0.3, resume=-1, checkpoint_every=600.0, max_wall_time=0.0, exact_resume=0)  # s, -, wall s x2
+
+# ---- §5.4.2: Galandrood mine, BFTOP's input and result (Fig 5-44) ----
+FIG_5_44 = dict(face_deg=81.0, layers_deg=39.0, failure_plane_deg=58.0, top_deg=32.0, height=16.5, thickness=0.3,
+                friction_columns_deg=26.0, friction_base_deg=26.0, base_cohesion=0.01e6, friction_rock_deg=45.0,
+                cohesion_rock=1.11e6, unit_weight=27e3, tensile_strength=5e6)  # deg, m, Pa, N/m3
+FIG_5_44_RESULT = dict(toe_force=-0.112e3, factor_of_safety=1.3802)  # [N per m, -] block-flexure (BFTOP)

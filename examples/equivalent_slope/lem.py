@@ -39,16 +39,11 @@ def main(run: str | None) -> dict:
     unit_weight = params.TABLE_5_5["density"] * G
     side_friction = math.degrees(math.atan(inputs["main_joint_friction"]))
     base_friction = math.degrees(math.atan(params.TABLE_5_6["base"][1]))
-    blocks = slope.blocks(unit_weight)
-    result = goodman_bray.analyse(blocks, side_friction, base_friction)
     rock = flexural.Rock(unit_weight, params.TABLE_5_5["bondTensileStrength"] * inputs["strength_factor"],
                          side_friction)
     return dict(failure_plane_deg=slope.failure_plane_deg, slope=vars(slope),
-                goodman_bray=dict(toe_force=result.toe_force, modes=result.modes,
-                                  limiting_friction_deg=goodman_bray.limiting_friction(blocks),
-                                  factor_of_safety=goodman_bray.factor_of_safety(blocks, side_friction)),
-                flexural=dict(toe_force=flexural.toe_force(slope, rock),
-                              factor_of_safety=flexural.factor_of_safety(slope, rock)),
+                goodman_bray=goodman_bray.summary(slope.blocks(unit_weight), side_friction, base_friction),
+                flexural={k: v for k, v in flexural.summary(slope, rock).items() if not k.startswith("side_")},
                 dem=dem and {k: v for k, v in dem.items() if k != "inputs"})
 
 

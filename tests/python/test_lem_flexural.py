@@ -50,3 +50,18 @@ def test_command_line_and_bad_rock(tmp_path, capsys):
     assert out["stable"] and out["factor_of_safety"] == pytest.approx(flexural.factor_of_safety(SLOPE, ROCK), rel=1e-3)
     with pytest.raises(ValueError, match=r"side_force_at = 1.2 is invalid: it must be in \(0, 1\)"):
         flexural.Rock(27e3, 5e6, 26.0, side_force_at=1.2)
+
+
+def test_galandrood_by_limit_equilibrium_brackets_bftop():
+    """examples/field/galandrood_lem.py on BFTOP's input (thesis Fig 5-44): Goodman and Bray (no
+    cohesion, no rock strength) find no friction below 45° that holds the toe; Aydan and Kawamoto
+    (the columns' 5 MPa) a factor above BFTOP's block-flexure 1.38."""
+    import os
+    import subprocess
+    import sys
+    from conftest import REPO
+    out = subprocess.run([sys.executable, os.path.join(REPO, "examples", "field", "galandrood_lem.py")],
+                         capture_output=True, text=True, check=True, cwd=REPO).stdout
+    result = json.loads(out)
+    assert result["goodman_bray"]["factor_of_safety"] is None and result["goodman_bray"]["toe_force"] > 0
+    assert result["flexural"]["stable"] and result["flexural"]["factor_of_safety"] > result["bftop_thesis"]["factor_of_safety"]

@@ -49,7 +49,7 @@ def test_one_block_on_an_incline_closed_form():
     assert gb.analyse(squat, 20.0).modes == ["sliding"] and gb.analyse(squat, 30.0).modes == ["stable"]
     tall = gb.Blocks((5.0,), width=2.0, base_dip_deg=25.0, a1=0.0, a2=0.0, unit_weight=20.0)
     assert gb.analyse(tall, 60.0).modes == ["toppling"]
-    with pytest.raises(ValueError, match="toe support at any friction"):
+    with pytest.raises(ValueError, match="toe needs support at every friction angle below 45"):
         gb.limiting_friction(tall)
 
 

@@ -35,11 +35,9 @@ def run_goodman_bray(inputs: dict[str, Any]) -> dict[str, Any]:
                                      _required(inputs, "a2"), unit_weight, inputs.get("crest", 0))
     else:
         blocks = _geometry(inputs).blocks(unit_weight)
-    result = goodman_bray.analyse(blocks, friction, inputs.get("base_friction_deg"))
-    out = dict(toe_force=result.toe_force, modes=result.modes,
-               limiting_friction_deg=goodman_bray.limiting_friction(blocks),
-               factor_of_safety=goodman_bray.factor_of_safety(blocks, friction),
-               blocks=[vars(b) for b in result.blocks], a1=blocks.a1, a2=blocks.a2, crest=blocks.crest_block)
+    out = goodman_bray.summary(blocks, friction, inputs.get("base_friction_deg"))
+    out.update(blocks=[vars(b) for b in goodman_bray.analyse(blocks, friction, inputs.get("base_friction_deg")).blocks],
+               a1=blocks.a1, a2=blocks.a2, crest=blocks.crest_block)
     if "required_fs" in inputs:
         out["toe_force_for_required_fs"] = goodman_bray.toe_support(blocks, friction, inputs["required_fs"])
     return out
@@ -50,9 +48,7 @@ def run_flexural(inputs: dict[str, Any]) -> dict[str, Any]:
     slope = _geometry(inputs)
     rock = flexural.Rock(_required(inputs, "unit_weight"), _required(inputs, "tensile_strength"),
                          _required(inputs, "friction_deg"), inputs.get("side_force_at", 0.6))
-    forces = flexural.side_forces(slope, rock)
-    return dict(toe_force=forces[0], stable=forces[0] < 0, factor_of_safety=flexural.factor_of_safety(slope, rock),
-                side_forces=forces, side_lengths=slope.side_lengths())
+    return flexural.summary(slope, rock)
 
 
 METHODS = {"goodman-bray": run_goodman_bray, "flexural": run_flexural}

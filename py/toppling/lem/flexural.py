@@ -92,3 +92,16 @@ def factor_of_safety(slope: SlopeGeometry, rock: Rock, tolerance: float = 1e-4) 
         mid = math.sqrt(low * high)
         low, high = (mid, high) if not fails(mid) else (low, mid)
     return math.sqrt(low * high)
+
+
+def summary(slope: SlopeGeometry, rock: Rock) -> dict:
+    """P0, whether the slope stands, the factor of safety (None with a ``note`` where none is
+    found), the side forces and lengths."""
+    forces = side_forces(slope, rock)
+    out = dict(toe_force=forces[0], stable=forces[0] < 0, factor_of_safety=None, side_forces=forces,
+               side_lengths=slope.side_lengths())
+    try:
+        out["factor_of_safety"] = factor_of_safety(slope, rock)
+    except ValueError as error:
+        out["note"] = str(error)
+    return out

@@ -135,12 +135,14 @@ def _sliding_force(p_above: float, weight: float, psi: float, tan_p: float, tan_
 
 def limiting_friction(blocks: Blocks, tolerance_deg: float = 1e-4) -> float:
     """The friction angle (sides and base alike) at which the toe needs no support (P0 = 0), by
-    bisection on [0, 89.9]°: P0 falls as friction rises."""
-    low, high = 0.0, 89.9
+    bisection below 45°: P0 falls as friction rises, and at 45° the sliding equation's
+    denominator 1 − tan φp tan φd vanishes (the equations hold below it only)."""
+    low, high = 0.0, 45.0 - 1e-6
     if analyse(blocks, low).toe_force == 0:
         return 0.0
     if analyse(blocks, high).toe_force > 0:
-        raise ValueError("the blocks need toe support at any friction angle below 89.9 degrees")
+        raise ValueError("the toe needs support at every friction angle below 45 degrees, where Goodman and Bray's "
+                         "sliding equation holds (tan phi_p tan phi_d < 1): no limiting friction angle")
     while high - low > tolerance_deg:
         mid = (low + high) / 2
         low, high = (mid, high) if analyse(blocks, mid).toe_force > 0 else (low, mid)
@@ -148,8 +150,23 @@ def limiting_friction(blocks: Blocks, tolerance_deg: float = 1e-4) -> float:
 
 
 def factor_of_safety(blocks: Blocks, friction_deg: float) -> float:
-    """tan φ / tan φ_limit: the factor by which the friction could be divided before the toe needs support."""
-    return math.tan(math.radians(friction_deg)) / math.tan(math.radians(limiting_friction(blocks)))
+    """tan φ / tan φ_limit: the factor by which the friction could be divided before the toe needs
+    support (inf when the blocks stand without friction)."""
+    limit = limiting_friction(blocks)
+    return math.tan(math.radians(friction_deg)) / math.tan(math.radians(limit)) if limit > 0 else math.inf
+
+
+def summary(blocks: Blocks, friction_deg: float, base_friction_deg: float | None = None) -> dict:
+    """Toe force, modes, limiting friction and factor of safety; where no friction below 45°
+    holds the toe, the last two are None and ``note`` says why."""
+    result = analyse(blocks, friction_deg, base_friction_deg)
+    out = dict(toe_force=result.toe_force, modes=result.modes, limiting_friction_deg=None, factor_of_safety=None)
+    try:
+        out["limiting_friction_deg"] = limiting_friction(blocks)
+        out["factor_of_safety"] = factor_of_safety(blocks, friction_deg)
+    except ValueError as error:
+        out["note"] = str(error)
+    return out
 
 
 def toe_support(blocks: Blocks, friction_deg: float, required_fs: float) -> float:
