@@ -108,3 +108,29 @@ FIG_5_44 = dict(face_deg=81.0, layers_deg=39.0, failure_plane_deg=58.0, top_deg=
                 friction_columns_deg=26.0, friction_base_deg=26.0, base_cohesion=0.01e6, friction_rock_deg=45.0,
                 cohesion_rock=1.11e6, unit_weight=27e3, tensile_strength=5e6)  # deg, m, Pa, N/m3
 FIG_5_44_RESULT = dict(toe_force=-0.112e3, factor_of_safety=1.3802)  # [N per m, -] block-flexure (BFTOP)
+
+# ---- §5.4.1: Ihlara Valley (Tables 5-12, 5-13; Figs 5-33 ... 5-37) ----
+_IHLARA_COMMON = dict(normalDamping=0.25, bondNormalDamping=0.2, thickness=1.0)  # per metre of valley
+TABLE_5_12 = {  # ParallelBondMat keyword arguments [kg/m3, Pa, -, rad]
+    "ash": dict(density=1820.0, young=0.6e9, knKs=1.0, frictionAngle=math.atan(0.36), bondYoung=0.6e9, bondKnKs=1.1,
+                bondTensileStrength=17.6e6, bondCohesion=17.6e6, bondFrictionAngle=math.radians(20), **_IHLARA_COMMON),
+    "ignimbrite": dict(density=2160.0, young=5.28e9, knKs=1.2, frictionAngle=math.atan(0.45), bondYoung=5.28e9,
+                       bondKnKs=1.3, bondTensileStrength=45e6, bondCohesion=37e6, bondFrictionAngle=math.radians(25),
+                       **_IHLARA_COMMON),
+    "tuff": dict(density=1950.0, young=1e9, knKs=1.2, frictionAngle=math.atan(0.3), bondYoung=1e9, bondKnKs=1.1,
+                 bondTensileStrength=23.5e6, bondCohesion=17.6e6, bondFrictionAngle=math.radians(16), **_IHLARA_COMMON),
+    "weathered": dict(density=1700.0, young=0.33e9, knKs=1.2, frictionAngle=math.atan(0.3), bondYoung=0.33e9,
+                      bondKnKs=1.1, bondTensileStrength=3.75e6, bondCohesion=2.44e6, bondFrictionAngle=math.radians(14),
+                      **_IHLARA_COMMON),
+}
+TABLE_5_12_DISCS = dict(rmin=0.15, rmax=0.25, bond_gap=0.025)  # [m]
+TABLE_5_13 = dict(bedding=(12e8, 12e6, 0.53), vertical=(12e8, 12e6, 0.55), gap=0.1e-3)  # (kn, ks [N/m3], mu), gap [m]
+IHLARA_BACK_ANALYSIS = 1.27  # the weathered tuff's bond strengths divided by it: 2.95 / 1.92 MPa (§5.4.1.4)
+# Our reconstruction of the section (the text gives 40 x 38 m, 25 m of ignimbrite, 3.5 m columns, and a
+# weathered zone under the first column and half the second; the rest is ours, docs/cases/ihlara.md).
+IHLARA_SECTION = dict(width=38.0, tuff=10.0, ignimbrite=25.0, ash=5.0, face_x=31.5, column_width=3.5,
+                      weathered_depth=2.5)  # [m]
+IHLARA = dict(case="weathered", weathered_strength_factor=1.0, porosity=0.18, seed=1, timestep_safety=0.8,
+              damping=0.0, settle_damping=0.7, chunk=0.1, rest_speed=0.01, fail_displacement=0.5,
+              max_stage_time=10.0, fail_columns=1, post_failure_time=5.0, resume=-1, checkpoint_every=600.0,
+              max_wall_time=0.0, exact_resume=0)  # case: weathered | eroded; s, m/s, m, s, -, s

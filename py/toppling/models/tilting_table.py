@@ -60,11 +60,13 @@ class Outline:
 
 @dataclass
 class JointMaterial:
-    stiffness: float  # kn = ks [N/m3]
+    stiffness: float  # kn [N/m3]
     friction: float  # mu
+    shear_stiffness: float | None = None  # ks [N/m3]; None: = kn
 
     def material(self, gap: float, thickness: float) -> SmoothJointMat:
-        return SmoothJointMat(normalStiffness=self.stiffness, shearStiffness=self.stiffness,
+        shear = self.stiffness if self.shear_stiffness is None else self.shear_stiffness
+        return SmoothJointMat(normalStiffness=self.stiffness, shearStiffness=shear,
                               frictionAngle=math.atan(self.friction), gap=gap, thickness=thickness)
 
 
@@ -158,11 +160,17 @@ def bonded_rock(discs: list[tuple[float, float, float]], rock: dict[str, Any], b
     """The discs (x, y, r) as rock of ParallelBondMat(**``rock``) in a scene with its engines: discs
     without a bond partner within ``bond_gap`` dropped, those within ``rmax`` of the ``held``
     segments fixed, all bonded."""
-    ids = add_discs(discs, ParallelBondMat(**rock))
+    ids = bond_in_scene(add_discs(discs, ParallelBondMat(**rock)), bond_gap, damping, safety)
+    boundary.fix(boundary.near(held, rmax, ids), "xy")
+    return ids
+
+
+def bond_in_scene(ids: list[int], bond_gap: float, damping: float, safety: float) -> list[int]:
+    """Give the scene its engines, drop the discs (of ``ids``) without a bond partner within
+    ``bond_gap`` and bond the rest; returns the discs kept."""
     O.engines = engines.engines(gravity=(0, -engines.G, 0), local_damping=damping, safety=safety)
     floaters = set(bonding.remove_floaters(bond_gap, ids=ids))
     ids = [i for i in ids if i not in floaters]
-    boundary.fix(boundary.near(held, rmax, ids), "xy")
     # Bond at once: the packer leaves the discs relaxed, and without its walls loose discs
     # would slump off the steps (the thesis settles inside walls, §5.3.2).
     bonding.bond_within_gap(bond_gap, ids)
