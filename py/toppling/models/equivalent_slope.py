@@ -39,7 +39,8 @@ from yade.wrapper import JointSetGeometry
 
 from toppling.build import columns, engines, geometry, joints, packing
 from toppling.checks import require
-from toppling.models.tilting_table import JointMaterial, Outline, bonded_rock, column_top_bands, packed_discs
+from toppling.models.tilting_table import (BondedDiscs, JointMaterial, Outline, bonded_rock, column_top_bands,
+                                           packed_discs)
 from toppling.run import tilt_run
 
 
@@ -100,7 +101,7 @@ class SlopeShape:
 
 
 @dataclass
-class EquivalentSlope:
+class EquivalentSlope(BondedDiscs):
     """The model: ``shape``, ``rock`` (ParallelBondMat's keyword arguments, ``thickness``
     included), bonds between discs within ``bond_gap`` [m], main joints of ``main`` and base
     joints (``base_joints``; None: every other column) of ``base`` material with ``joint_gap``
@@ -112,12 +113,6 @@ class EquivalentSlope:
     rock: dict[str, Any]
     main: JointMaterial
     base: JointMaterial
-    joint_gap: float
-    bond_gap: float
-    rmin: float
-    rmax: float
-    porosity: float
-    seed: int
     base_joints: list[BaseJoint] | None = None
     joints_into_foundation: bool = False
     z_order: bool = False
@@ -126,8 +121,7 @@ class EquivalentSlope:
     layout: columns.ColumnLayout = field(init=False)
 
     def __post_init__(self):
-        if not 0 < self.bond_gap <= self.rmax:
-            raise ValueError(f"bond_gap = {self.bond_gap} is invalid: it must be in (0, rmax] m")
+        super().__post_init__()
         engines.check_safety(self.timestep_safety, "timestep_safety")
         self.layout = self.shape.outline().layout()
         if self.base_joints is None:

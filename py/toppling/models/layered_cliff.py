@@ -14,10 +14,10 @@ from typing import Any
 
 from yade.wrapper import JointSetGeometry, ParallelBondMat
 
-from toppling.build import boundary, columns, geometry, joints, packing
+from toppling.build import boundary, columns, engines, geometry, joints, packing
 from toppling.build.discs import add_discs
 from toppling.checks import require
-from toppling.models.tilting_table import JointMaterial, bond_in_scene, column_top_bands, packed_discs
+from toppling.models.tilting_table import BondedDiscs, JointMaterial, bond_in_scene, column_top_bands, packed_discs
 
 
 @dataclass(frozen=True)
@@ -36,11 +36,11 @@ class Zone:
 
 
 @dataclass
-class LayeredCliff:
+class LayeredCliff(BondedDiscs):
     """``width`` × (``foundation`` below the bedding, ``layers`` above it) [m]; the cliff's face at
     ``face_x``, the ground in front of it at y = 0; ``column_width`` [m] columns from the face
     back to x = 0, cut by ``vertical`` joints from the bedding to the top and standing on the
-    ``bedding`` joint; ``zone`` at the toe; discs R ``rmin``-``rmax`` at ``porosity``."""
+    ``bedding`` joint; ``zone`` at the toe; its discs as ``BondedDiscs``."""
     width: float
     foundation: Layer  # its ``top`` is its thickness below the bedding
     layers: list[Layer]
@@ -49,17 +49,13 @@ class LayeredCliff:
     vertical: JointMaterial
     bedding: JointMaterial
     zone: Zone | None
-    joint_gap: float
-    bond_gap: float
-    rmin: float
-    rmax: float
-    porosity: float
-    seed: int
     timestep_safety: float = 0.5
     damping: float = 0.0
     layout: columns.ColumnLayout = None
 
     def __post_init__(self):
+        super().__post_init__()
+        engines.check_safety(self.timestep_safety, "timestep_safety")
         require("face_x", self.face_x, f"(0, {self.width:g})")
         require("column_width", self.column_width, f"(0, {self.face_x:g}]")
         count = round(self.face_x / self.column_width)

@@ -71,7 +71,23 @@ class JointMaterial:
 
 
 @dataclass
-class TiltingTable:
+class BondedDiscs:
+    """What a model's rock is made of: discs R ``rmin``-``rmax`` [m] packed at ``porosity`` with
+    ``seed``, bonded within ``bond_gap`` [m], cut by joints installed with ``joint_gap`` [m]."""
+    joint_gap: float
+    bond_gap: float
+    rmin: float
+    rmax: float
+    porosity: float
+    seed: int
+
+    def __post_init__(self):
+        if not 0 < self.bond_gap <= self.rmax:
+            raise ValueError(f"bond_gap = {self.bond_gap} is invalid: it must be in (0, rmax] m")
+
+
+@dataclass
+class TiltingTable(BondedDiscs):
     """The model: ``outline``, ``rock`` (ParallelBondMat's keyword arguments, ``thickness``
     included), bonds between discs within ``bond_gap`` [m], joints of ``main`` and ``base``
     material with ``joint_gap`` [m]; discs R ``rmin``-``rmax`` [m] packed at ``porosity`` with
@@ -85,15 +101,9 @@ class TiltingTable:
     rock: dict[str, Any]
     main: JointMaterial
     base: JointMaterial
-    joint_gap: float
-    bond_gap: float
     arrangement: str
     block_length: float
     design_plane_deg: float
-    rmin: float
-    rmax: float
-    porosity: float
-    seed: int
     layout_seed: int = 1
     cut_rules: bool = True
     joint_pieces: bool = True
@@ -102,11 +112,10 @@ class TiltingTable:
     damping: float = 0.0
 
     def __post_init__(self):
+        super().__post_init__()
         check_arrangement(self.arrangement)
         if self.layout_seed != int(self.layout_seed) or self.layout_seed < 0:
             raise ValueError(f"layout_seed = {self.layout_seed} is invalid: it must be an integer >= 0")
-        if not 0 < self.bond_gap <= self.rmax:
-            raise ValueError(f"bond_gap = {self.bond_gap} is invalid: it must be in (0, rmax] m")
         engines.check_safety(self.timestep_safety, "timestep_safety")
 
     def cross_joint_heights(self, layout: columns.ColumnLayout) -> dict[int, list[float]]:
