@@ -119,6 +119,33 @@ class LayeredCliff(BondedDiscs):
         return column_top_bands(layout, self.rmax)
 
 
+def ihlara_from_params(p: Any, thesis: Any) -> LayeredCliff:
+    """The Ihlara Valley's cliff (thesis §5.4.1) from a parameter set ``p`` (``case``: 'intact',
+    'weathered' or 'eroded'; ``weathered_strength_factor`` divides the weathered tuff's bond
+    strengths; ``joint_gap`` [m]; ``joint_shear_stiffness`` [N/m³], 0: Table 5-13's; ``porosity``,
+    ``seed``, ``timestep_safety``, ``damping``) and the thesis' numbers (``thesis``: examples/params.py)."""
+    if p.case not in ("intact", "weathered", "eroded"):
+        raise ValueError(f"case = {p.case!r} is invalid: it must be 'intact', 'weathered' or 'eroded'")
+    require("weathered_strength_factor", p.weathered_strength_factor, "(0, inf)")
+    require("joint_gap", p.joint_gap, "[0, inf)")
+    require("joint_shear_stiffness", p.joint_shear_stiffness, "[0, inf)")
+    section, rocks, discs, joint = thesis.IHLARA_SECTION, thesis.TABLE_5_12, thesis.TABLE_5_12_DISCS, thesis.TABLE_5_13
+    weathered = dict(rocks["weathered"])
+    for key in ("bondTensileStrength", "bondCohesion"):
+        weathered[key] /= p.weathered_strength_factor
+    box = (section["face_x"] - 1.5 * section["column_width"], section["width"], -section["weathered_depth"], 0.0)
+    kn, ks = joint["vertical"][0], p.joint_shear_stiffness or joint["vertical"][1]  # the two sets share them
+    return LayeredCliff(
+        width=section["width"], foundation=Layer(section["tuff"], rocks["tuff"]),
+        layers=[Layer(section["ignimbrite"], rocks["ignimbrite"]),
+                Layer(section["ignimbrite"] + section["ash"], rocks["ash"])],
+        face_x=section["face_x"], column_width=section["column_width"],
+        vertical=JointMaterial(kn, joint["vertical"][2], ks), bedding=JointMaterial(kn, joint["bedding"][2], ks),
+        zone=None if p.case == "intact" else Zone(box, weathered if p.case == "weathered" else None),
+        joint_gap=p.joint_gap, bond_gap=discs["bond_gap"], rmin=discs["rmin"], rmax=discs["rmax"],
+        porosity=p.porosity, seed=p.seed, timestep_safety=p.timestep_safety, damping=p.damping)
+
+
 def _inside(box: tuple[float, float, float, float], x: float, y: float) -> bool:
     x0, x1, y0, y1 = box
     return x0 <= x <= x1 and y0 <= y <= y1
