@@ -3,7 +3,6 @@ block across a smooth joint on an incline, against FS = (c A + W cos α tan φ) 
 import math
 
 import pytest
-from yade import O
 
 from conftest import run_example
 from toppling.load.strength_reduction import Reduction, Search
