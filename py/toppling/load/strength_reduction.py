@@ -79,7 +79,7 @@ class Trial:
     factor: float
     failed: bool
     displacement: float  # [m] the largest median displacement of a watched group
-    breaks: int  # bonds broken during the trial
+    breaks: int  # parallel bonds broken during the trial (cemented joint contacts not counted)
     time: float  # [s] simulated
 
 
