@@ -43,7 +43,7 @@ def main(run: str | None) -> dict:
                          side_friction)
     return dict(failure_plane_deg=slope.failure_plane_deg, slope=vars(slope),
                 goodman_bray=goodman_bray.summary(slope.blocks(unit_weight), side_friction, base_friction),
-                flexural={k: v for k, v in flexural.summary(slope, rock).items() if not k.startswith("side_")},
+                flexural=flexural.summary(slope, rock),
                 dem=dem and {k: v for k, v in dem.items() if k != "inputs"})
 
 

@@ -19,5 +19,5 @@ blocks = slope.blocks(fig["unit_weight"])
 rock = flexural.Rock(fig["unit_weight"], fig["tensile_strength"], fig["friction_columns_deg"])
 print(json_text(dict(columns=len(blocks.heights),
                      goodman_bray=goodman_bray.summary(blocks, fig["friction_columns_deg"], fig["friction_base_deg"]),
-                     flexural={k: v for k, v in flexural.summary(slope, rock).items() if not k.startswith("side_")},
+                     flexural=flexural.summary(slope, rock),
                      bftop_thesis=params.FIG_5_44_RESULT)))

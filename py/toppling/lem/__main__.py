@@ -35,9 +35,8 @@ def run_goodman_bray(inputs: dict[str, Any]) -> dict[str, Any]:
                                      _required(inputs, "a2"), unit_weight, inputs.get("crest", 0))
     else:
         blocks = _geometry(inputs).blocks(unit_weight)
-    out = goodman_bray.summary(blocks, friction, inputs.get("base_friction_deg"))
-    out.update(blocks=[vars(b) for b in goodman_bray.analyse(blocks, friction, inputs.get("base_friction_deg")).blocks],
-               a1=blocks.a1, a2=blocks.a2, crest=blocks.crest_block)
+    out = goodman_bray.summary(blocks, friction, inputs.get("base_friction_deg"), per_block=True)
+    out.update(a1=blocks.a1, a2=blocks.a2, crest=blocks.crest_block)
     if "required_fs" in inputs:
         out["toe_force_for_required_fs"] = goodman_bray.toe_support(blocks, friction, inputs["required_fs"])
     return out
@@ -48,7 +47,7 @@ def run_flexural(inputs: dict[str, Any]) -> dict[str, Any]:
     slope = _geometry(inputs)
     rock = flexural.Rock(_required(inputs, "unit_weight"), _required(inputs, "tensile_strength"),
                          _required(inputs, "friction_deg"), inputs.get("side_force_at", 0.6))
-    return flexural.summary(slope, rock)
+    return flexural.summary(slope, rock, per_column=True)
 
 
 METHODS = {"goodman-bray": run_goodman_bray, "flexural": run_flexural}

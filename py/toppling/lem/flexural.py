@@ -94,14 +94,15 @@ def factor_of_safety(slope: SlopeGeometry, rock: Rock, tolerance: float = 1e-4) 
     return math.sqrt(low * high)
 
 
-def summary(slope: SlopeGeometry, rock: Rock) -> dict:
+def summary(slope: SlopeGeometry, rock: Rock, per_column: bool = False) -> dict:
     """P0, whether the slope stands, the factor of safety (None with a ``note`` where none is
-    found), the side forces and lengths."""
+    found); ``per_column``: the side forces and lengths too."""
     forces = side_forces(slope, rock)
-    out = dict(toe_force=forces[0], stable=forces[0] < 0, factor_of_safety=None, side_forces=forces,
-               side_lengths=slope.side_lengths())
+    out = dict(toe_force=forces[0], stable=forces[0] < 0, factor_of_safety=None)
     try:
         out["factor_of_safety"] = factor_of_safety(slope, rock)
     except ValueError as error:
         out["note"] = str(error)
+    if per_column:
+        out.update(side_forces=forces, side_lengths=slope.side_lengths())
     return out

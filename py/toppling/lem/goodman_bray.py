@@ -156,9 +156,10 @@ def factor_of_safety(blocks: Blocks, friction_deg: float) -> float:
     return math.tan(math.radians(friction_deg)) / math.tan(math.radians(limit)) if limit > 0 else math.inf
 
 
-def summary(blocks: Blocks, friction_deg: float, base_friction_deg: float | None = None) -> dict:
-    """Toe force, modes, limiting friction and factor of safety; where no friction below 45°
-    holds the toe, the last two are None and ``note`` says why."""
+def summary(blocks: Blocks, friction_deg: float, base_friction_deg: float | None = None,
+            per_block: bool = False) -> dict:
+    """Toe force, modes, limiting friction and factor of safety (where no friction below 45° holds
+    the toe, the last two are None and ``note`` says why); ``per_block``: each block's forces too."""
     result = analyse(blocks, friction_deg, base_friction_deg)
     out = dict(toe_force=result.toe_force, modes=result.modes, limiting_friction_deg=None, factor_of_safety=None)
     try:
@@ -166,6 +167,8 @@ def summary(blocks: Blocks, friction_deg: float, base_friction_deg: float | None
         out["factor_of_safety"] = factor_of_safety(blocks, friction_deg)
     except ValueError as error:
         out["note"] = str(error)
+    if per_block:
+        out["blocks"] = [vars(b) for b in result.blocks]
     return out
 
 
