@@ -45,7 +45,9 @@ x_start = O.bodies[setup.toe].state.pos[0]
 
 a = math.radians(table.alpha)
 weight = sum(O.bodies[i].state.mass for i in setup.block) * engines.G
-area = sum(i.phys.area for i in O.interactions if isinstance(i.phys, SmoothJointPhys))
+contacts = [i.phys for i in O.interactions if isinstance(i.phys, SmoothJointPhys)]
+area = sum(c.area for c in contacts)
+stresses = [c.jointNormalForce / c.area for c in contacts]  # compression positive [Pa]: how even the joint is loaded
 closed = (table.cohesion * area + weight * math.cos(a) * math.tan(math.radians(table.phi))) / (weight * math.sin(a))
 
 criteria = tilting.StageCriteria(chunk=0.02, rest_speed=1e-3, fail_displacement=0.1 * table.b, max_stage_time=1.0)
@@ -62,7 +64,9 @@ translation, turn = O.bodies[setup.toe].state.pos[0] - x_start, math.radians(inc
 mode = "slide" if translation > table.b * abs(turn) else "topple"
 match = output.comparison(fs, closed, "-") if fs is not None else {}
 output.write_summary(table.out, output.table_inputs(table), **match, factor_of_safety=fs, bracket=bracket,
-                     closed_form=closed, mode_at_failure=mode, weight=weight, joint_area=area,
+                     closed_form=closed, joint_contacts=len(contacts), joint_normal_stress=(min(stresses), max(stresses)),
+                     mode_at_failure=mode, weight=weight, joint_area=area,
                      trials=[vars(t) for t in search.trials], discs=len(setup.block) + len(setup.base), steps=O.iter)
 print(f"factor of safety {'none' if fs is None else f'{fs:.4f}'} (bracket {bracket}), closed form {closed:.4f}; "
-      f"at failure the block {mode}s ({translation * 1e3:.2f} mm, {math.degrees(turn):.2f} deg)")
+      f"at failure the block {mode}s ({translation * 1e3:.2f} mm, {math.degrees(turn):.2f} deg); at rest on "
+      f"{len(contacts)} joint contacts, normal stress {min(stresses):.0f} to {max(stresses):.0f} Pa")
