@@ -30,12 +30,14 @@ BOND_GAP = 0.05  # x Rmin
 
 
 def build(b: float, h: float, rmin: float, rmax: float, rock: dict, joint_friction_deg: float,
-          smooth: bool = True, porosity: float = 0.2, seed: int = 1, joint_stiffness_scale: float = 1.0) -> BlockOnBase:
+          smooth: bool = True, porosity: float = 0.2, seed: int = 1, joint_stiffness_scale: float = 1.0,
+          bond_gap: float = BOND_GAP) -> BlockOnBase:
     """Pack, bond (unbreakable bonds) and joint a b x h block on a base; gravity vertical.
 
-    ``rock``: ParallelBondMat parameters. The joint has the bonds' stiffness per area (times
-    ``joint_stiffness_scale``) and friction ``joint_friction_deg``; ``smooth=False`` only cuts the bonds across it (plain
-    disc contacts with that friction).
+    ``rock``: ParallelBondMat parameters. Discs within ``bond_gap`` x Rmin are bonded, and those
+    pairs across the joint become its contacts. The joint has the bonds' stiffness per area (times
+    ``joint_stiffness_scale``) and friction ``joint_friction_deg``; ``smooth=False`` only cuts the
+    bonds across it (plain disc contacts with that friction).
     """
     width, thickness, x0 = 2 * b + 2 * h, 10 * rmax, 0.5 * b  # room downhill (+x) to slide or topple
     section = [(0, -thickness), (width, -thickness), (width, 0), (x0 + b, 0), (x0 + b, h), (x0, h), (x0, 0), (0, 0)]
@@ -45,9 +47,9 @@ def build(b: float, h: float, rmin: float, rmax: float, rock: dict, joint_fricti
     base = [O.bodies.append(disc((x, y), r, mat, fixed=True)) for x, y, r in discs if y < 0]
     block = [O.bodies.append(disc((x, y), r, mat)) for x, y, r in discs if y >= 0]
     O.engines = engines.engines(gravity=(0, -engines.G, 0), local_damping=0.0)
-    floaters = set(bonding.remove_floaters(BOND_GAP * rmin, ids=block))
+    floaters = set(bonding.remove_floaters(bond_gap * rmin, ids=block))
     block = [i for i in block if i not in floaters]
-    bonding.bond_within_gap(BOND_GAP * rmin)
+    bonding.bond_within_gap(bond_gap * rmin)  # also which pairs across the joint get a joint contact
     interface, box = JointSetGeometry(origin=(0, 0), dip=0), ((-1, -1), (width + 1, h + 1))
     if smooth:
         stiffness = joint_stiffness_scale * mat.bondYoung / (2 * rmin)
