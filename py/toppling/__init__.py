@@ -4,7 +4,7 @@ The package by role:
 
 * :mod:`toppling.build`: discs, engines, packing, bonding, joints, boundary, column layouts
 * :mod:`toppling.load`: tilting (gravity rotation, ramps, stages)
-* :mod:`toppling.run`: steps, staged tilting runs, checkpoints that resume, progress, monitoring points
+* :mod:`toppling.run`: steps, staged tilting runs, checkpoints that resume, progress, monitoring points, sweeps on Dask
 * :mod:`toppling.analyse`: failure points and surfaces, zones, S/H and T/H, statistics over runs
 * :mod:`toppling.io`: summary.json, plots, ParaView series, reading a run folder back
 * :mod:`toppling.models`: parametrised scenes (tilting table, equivalent slope, block on an incline, specimen)

@@ -118,24 +118,27 @@ def cluster(tmp_path):
             break
         time.sleep(0.5)
     address = json.loads(info.read_text())["address"]
-    workers = [subprocess.Popen(["dask-worker", address, "--nthreads", "1", "--no-nanny", *loopback],
+    bare = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "TOPPLING_REPO")}  # no toppling needed
+    workers = [subprocess.Popen(["dask-worker", address, "--nthreads", "1", "--no-nanny", *loopback], env=bare,
                                 stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL) for _ in range(2)]
-    yield address, workers
+    yield address, workers, str(info)
     for p in workers + processes:
         p.kill()
         p.wait()
 
 
-def test_a_scheduler_started_apart_runs_the_table_through_its_address(tmp_path, cluster):
-    address, _ = cluster
+def test_a_scheduler_started_apart_runs_the_table_through_its_address_or_its_file(tmp_path, cluster):
+    address, _, info = cluster
     (tmp_path / "drops.table").write_text(FOUR_DROPS)
-    done = run_sweep(tmp_path, tmp_path / "drops.table", FREE_FALL, "--scheduler", address)
+    done = run_sweep(tmp_path, tmp_path / "drops.table", FREE_FALL, "--scheduler", address, "--lines", "2-3")
     assert done.returncode == 0, done.stdout[-2000:] + done.stderr[-2000:]
+    done = run_sweep(tmp_path, tmp_path / "drops.table", FREE_FALL, "--scheduler", info)
+    assert done.returncode == 0 and "2 finished already" in done.stdout, done.stdout[-2000:] + done.stderr[-2000:]
     assert sorted(summaries(tmp_path / "out")) == ["d1", "d2", "d3", "d4"]
 
 
 def test_a_killed_worker_has_its_line_run_elsewhere_and_a_failing_line_is_reported(tmp_path, cluster):
-    address, workers = cluster
+    address, workers, _ = cluster
     (tmp_path / "job.py").write_text(JOB)
     (tmp_path / "jobs.table").write_text("description seconds value out\nkilled 6.0 1.0 'out/killed'\n"
                                          "other 6.0 2.0 'out/other'\nbad 0.0 -1.0 'out/bad'\n")

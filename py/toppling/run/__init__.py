@@ -1,1 +1,1 @@
-"""Running a scene: steps in this thread, staged tilting runs, checkpoints that resume, progress lines, monitoring points."""
+"""Running a scene: steps in this thread, staged tilting runs, checkpoints that resume, progress lines, monitoring points; running many (sweeps on Dask)."""

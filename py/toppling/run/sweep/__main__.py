@@ -11,7 +11,8 @@ def arguments(argv):
     parser.add_argument("table", help="a yade-batch table (the same files yade-batch reads)")
     parser.add_argument("script", help="the script each line runs (a line's !SCRIPT column overrides it)")
     parser.add_argument("--lines", help="lines to run, yade-batch's form: 3,5-8 (default: all)")
-    parser.add_argument("--scheduler", help="address of a running Dask scheduler (default: a local cluster)")
+    parser.add_argument("--scheduler", help="a running Dask scheduler: its address (tcp://host:port, tls://...) "
+                                            "or its --scheduler-file (default: a local cluster)")
     parser.add_argument("--workers", type=int, default=os.cpu_count(),
                         help="workers of the local cluster, one thread each (default: the machine's cores, %(default)s)")
     parser.add_argument("--figures", help="comma-separated summary keys for the final table (default: the "

@@ -62,10 +62,13 @@ def finished(line: batch_table.Line, out: str) -> bool:
 
 
 def connect(scheduler: Optional[str], workers: int):
-    """A client of the scheduler at ``scheduler`` (Dask's TLS settings from its configuration), or
+    """A client of the scheduler at ``scheduler`` (an address, or the file ``dask-scheduler
+    --scheduler-file`` wrote; Dask's TLS settings from its configuration), or
     of a local cluster of ``workers`` one-thread worker processes listening on 127.0.0.1 only (their
     HTTP endpoints too). Returns (client, local cluster or None)."""
     from distributed import Client, LocalCluster
+    if scheduler and os.path.isfile(scheduler):
+        return Client(scheduler_file=scheduler, timeout="30s"), None
     if scheduler:
         return Client(scheduler, timeout="30s"), None
     # with or without a dashboard, the scheduler and each worker serve HTTP (health, metrics), on
