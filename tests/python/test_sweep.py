@@ -40,6 +40,15 @@ def summaries(folder):
             if os.path.isdir(os.path.join(folder, name))}
 
 
+def gone(pid, within=10.0):
+    """Whether process ``pid`` ends within ``within`` seconds."""
+    for _ in range(int(within / 0.1)):
+        if not os.path.exists(f"/proc/{pid}"):
+            return True
+        time.sleep(0.1)
+    return False
+
+
 def test_a_local_cluster_writes_the_summaries_yade_batch_writes_and_a_second_sweep_does_no_work(tmp_path):
     (tmp_path / "drops.table").write_text(FOUR_DROPS)
     for where in ("batch", "sweep"):
@@ -154,10 +163,30 @@ def test_a_killed_worker_has_its_line_run_elsewhere_and_a_failing_line_is_report
     assert worker in [w.pid for w in workers]
     os.kill(worker, signal.SIGKILL)
     output, _ = sweeping.communicate(timeout=300)
-    time.sleep(0.5)
-    assert not os.path.exists(f"/proc/{run}")  # the run died with its worker
+    assert gone(run)  # the run died with its worker
     assert sweeping.returncode == 1, output  # the bad line failed
     assert "| killed | done |" in output and "| other | done |" in output and "| bad | failed |" in output
     assert "line 4 (bad): ValueError: value = -1.0: give 0 or more" in output
     assert json.load(open(tmp_path / "out" / "killed" / "summary.json"))["double"] == 2.0
     assert (tmp_path / "out" / "killed.log").read_text().count("# toppling-sweep: line 2") == 2  # run twice
+
+
+def test_a_stopped_sweep_stops_its_runs_and_the_same_command_finishes_it(tmp_path):
+    (tmp_path / "job.py").write_text(JOB)
+    (tmp_path / "jobs.table").write_text("description seconds out\nquick 0.0 'out/quick'\nslow 60.0 'out/slow'\n")
+    command = [SWEEP, str(tmp_path / "jobs.table"), str(tmp_path / "job.py"), "--workers", "2"]
+    sweeping = subprocess.Popen(command, cwd=tmp_path, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    slow = tmp_path / "out" / "slow" / "started"
+    for _ in range(120):
+        if (tmp_path / "out" / "quick" / "summary.json").exists() and slow.exists() and slow.read_text():
+            break
+        time.sleep(0.25)
+    sweeping.send_signal(signal.SIGTERM)  # as a batch system ends a job
+    output, _ = sweeping.communicate(timeout=60)
+    assert sweeping.returncode == 130 and "run the same command again" in output, output
+    assert gone(int(slow.read_text()))
+    (tmp_path / "jobs.table").write_text("description seconds out\nquick 0.0 'out/quick'\nslow 0.0 'out/slow'\n")
+    # (the slow line made quick: its inputs changed, so it runs; the quick one is kept)
+    again = subprocess.run(command, cwd=tmp_path, capture_output=True, text=True, timeout=300)
+    assert again.returncode == 0 and "1 finished already" in again.stdout, again.stdout + again.stderr
+    assert "| quick | skipped |" in again.stdout and "| slow | done |" in again.stdout

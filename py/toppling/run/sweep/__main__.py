@@ -3,6 +3,7 @@ lines of a yade-batch table run as Dask tasks, on a local cluster (127.0.0.1 onl
 scheduler; prints progress, then one table of the summaries. Exit status 1 if a line failed."""
 import argparse
 import os
+import signal
 import sys
 
 
@@ -39,9 +40,14 @@ def main(argv=None) -> int:
     print(f"sweep: {len(planned)} lines of {args.table}, {len(planned) - todo} finished already", flush=True)
     results = {}
     if todo:
+        # a batch system ends a job with SIGTERM: stop as on Ctrl-C, the local cluster (and its runs) with us
+        signal.signal(signal.SIGTERM, signal.default_int_handler)
         client, cluster = sweep.connect(args.scheduler, args.workers)
         try:
             results = sweep.execute(planned, client, echo=lambda s: print(s, flush=True))
+        except KeyboardInterrupt:
+            print("sweep: stopped; finished lines are kept: run the same command again to go on", flush=True)
+            return 130
         finally:
             client.close()
             if cluster is not None:
