@@ -1,10 +1,14 @@
 """A block in Sagaseta's band (tan φ ≤ b/h < tan α: it should slide upright) and the joint contacts
-that carry it: a 9 × 20 cm block, α 30°, φ 20°, settled on the level table, then tilted. Prints
-every 0.01 s, then 0.05 s: its toe's slide, its turn, its joint contacts and the loaded ones' place
-behind the toe disc (docs/notebook/2026-12-05_limit_equilibrium_strength_reduction.md).
+that carry it: a 9 × 20 cm block, α 30°, settled on the level table, then tilted. Prints, at rest,
+the joint contacts (place behind the toe disc, normal force) and how far behind the block's toe
+edge the foremost one lies against the margin (b − h tan φ)/2 within which a sliding block's base
+reaction must fall; then every 0.01 s, then 0.05 s: its toe's slide, its turn, its joint contacts
+and the loaded ones' place behind the toe disc (docs/verification.md).
 
-    ./yade -x -n -j1 calibration/block_on_incline/band.py [rmax [bond_gap]]     # 0.004 m, 0.05 Rmin
+    ./yade -x -n -j1 calibration/block_on_incline/band.py [rmax [bond_gap [phi [joint_stiffness_scale]]]]
+    # defaults: 0.004 m, 0.05 Rmin, 20 deg, 1
 """
+import math
 import sys
 
 from yade import O
@@ -17,11 +21,22 @@ from toppling.run.steps import run_steps, steps_in
 
 rmax = float(sys.argv[1]) if len(sys.argv) > 1 else 0.004
 bond_gap = float(sys.argv[2]) if len(sys.argv) > 2 else incline.BOND_GAP
-block = incline.build(0.09, 0.2, rmax / params.PACKING_R_RATIO, rmax, params.TABLE_5_6_ROCK, 20.0, bond_gap=bond_gap)
+phi = float(sys.argv[3]) if len(sys.argv) > 3 else 20.0
+scale = float(sys.argv[4]) if len(sys.argv) > 4 else 1.0
+b, h = 0.09, 0.2
+block = incline.build(b, h, rmax / params.PACKING_R_RATIO, rmax, params.TABLE_5_6_ROCK, phi, bond_gap=bond_gap,
+                      joint_stiffness_scale=scale)
 incline.settle(0.05)
-tilting.set_tilt(30.0)
-members, start = set(block.block), O.time
+members = set(block.block)
 toe_x = O.bodies[block.toe].state.pos[0]
+edge = max(O.bodies[i].state.pos[0] + O.bodies[i].shape.radius for i in block.block)
+at_rest = sorted((O.bodies[i.id1 if i.id1 in members else i.id2].state.pos[0] - toe_x, i.phys.jointNormalForce)
+                 for i in O.interactions if isinstance(i.phys, SmoothJointPhys))
+print("at rest, joint contacts (mm behind the toe disc, N):", [(round(1e3 * x, 1), round(f, 1)) for x, f in at_rest])
+print(f"foremost joint contact {1e3 * (edge - toe_x - at_rest[-1][0]):.1f} mm behind the toe edge; a sliding block's "
+      f"reaction lies {1e3 * (b - h * math.tan(math.radians(phi))) / 2:.1f} mm behind it", flush=True)
+tilting.set_tilt(30.0)
+start = O.time
 for interval in [0.01] * 5 + [0.05] * 7:
     run_steps(steps_in(interval))
     contacts = [i for i in O.interactions if isinstance(i.phys, SmoothJointPhys)]
