@@ -108,6 +108,28 @@ FIG_5_44 = dict(face_deg=81.0, layers_deg=39.0, failure_plane_deg=58.0, top_deg=
                 friction_columns_deg=26.0, friction_base_deg=26.0, base_cohesion=0.01e6, friction_rock_deg=45.0,
                 cohesion_rock=1.11e6, unit_weight=27e3, tensile_strength=5e6)  # deg, m, Pa, N/m3
 FIG_5_44_RESULT = dict(toe_force=-0.112e3, factor_of_safety=1.3802)  # [N per m, -] block-flexure (BFTOP)
+# ---- §5.4.2: Galandrood mine, the DEM model (Tables 5-14 ... 5-16) ----
+TABLE_5_14 = dict(density=3000.0, young=6.55e9, knKs=1.5, frictionAngle=math.atan(0.05), bondYoung=6.55e9, bondKnKs=1.5,
+                  bondTensileStrength=149.9e6, bondCohesion=114.2e6, bondFrictionAngle=math.radians(8.1),
+                  bondNormalDamping=0.2, normalDamping=0.25, thickness=1.0)  # ParallelBondMat [kg/m3, Pa, -, rad, m]
+TABLE_5_14_DISCS = dict(rmin=0.0375, rmax=0.06, bond_gap=0.06)  # [m]
+TABLE_5_15 = dict(kn=12e7, ks=12e8, friction=0.5, gap=0.01)  # [N/m3, N/m3, -, m] as printed (ks = 10 kn)
+TABLE_5_16_FACTOR = 1.62  # the bonds' tensile strength and cohesion / 1.62 (92.5, 70.5 MPa), their friction 8.1° / 1.62 = 5°
+GALANDROOD_RESULT = dict(stable_unreduced=True, fails_at_factor=TABLE_5_16_FACTOR)  # §5.4.2.2, Fig 5-48
+# Our reconstruction of the section (the text gives Fig 5-44's slope and "40951 particles"; the
+# sketch, Fig 5-45, is not in the text): the slope of Fig 5-44 built as the equivalent slope's
+# model (toppling.models.equivalent_slope), its columns standing on the plane through the toe normal
+# to the layers and running on into the rock below it; 80 columns (24 m along that plane) make a
+# section of 341 m², about what the thesis' 40,951 discs at n ≈ 0.12 fill (354 m²; docs/cases/galandrood.md).
+GALANDROOD_SHAPE = dict(height=FIG_5_44["height"], joint_dip_deg=FIG_5_44["layers_deg"], face_deg=FIG_5_44["face_deg"],
+                        top_deg=FIG_5_44["top_deg"], spacing=FIG_5_44["thickness"], columns=80)
+GALANDROOD = dict(**TABLE_5_14_DISCS, columns=GALANDROOD_SHAPE["columns"], porosity=0.18, seed=1, joint_gap=0.0,
+                  reduction_factor=TABLE_5_16_FACTOR,
+                  timestep_safety=0.8, damping=0.0, settle_damping=0.7,
+                  chunk=0.05, rest_speed=1e-3, fail_displacement=0.5, max_stage_time=2.0, fail_columns=2,
+                  post_failure_time=1.0, resume=-1, checkpoint_every=600.0, max_wall_time=0.0, exact_resume=0)
+# m, m, m (Table 5-14), -, -, -; joint_gap [m]: 0, Table 5-15's 1 cm read as the distance within which discs across a joint are paired (our bond
+# gap, 6 cm, pairs them), not as an aperture; s, m/s, m, s, -, s, -, wall s x2
 
 # ---- §5.4.1: Ihlara Valley (Tables 5-12, 5-13; Figs 5-33 ... 5-37) ----
 _IHLARA_COMMON = dict(normalDamping=0.25, bondNormalDamping=0.2, thickness=1.0)  # per metre of valley

@@ -74,12 +74,17 @@ def test_the_scene_is_bonded_rock_fixed_on_its_foundation_and_jointed_once_settl
             assert any(layout.column_of(mid[0] + dx) % 2 == 1 for dx in (-model.rmax, 0, model.rmax))
 
 
-def test_main_joints_reach_the_horizontal_base_when_they_run_into_the_foundation():
+def test_main_joints_reach_the_foundations_edge_when_they_run_into_the_foundation():
     through = base_model(joints_into_foundation=1).main_joints()
-    toe, foot, _ = base_model().foundation()
+    toe, foot, back = base_model().foundation()
+    on_side = 0
     for (x, y), top in zip(through.segmentStarts, through.segmentEnds):
-        # the start lies on the horizontal base (the line from the toe to the right side's foot)
-        assert y == pytest.approx((x - toe[0]) * (foot[1] - toe[1]) / (foot[0] - toe[0]), abs=1e-12) and top[1] > 0
+        # the start lies on the horizontal base (toe to the right side's foot), or beyond the foot on
+        # the right side (foot up to the table plane): on the section's edge, never below it
+        a, b = (toe, foot) if x >= foot[0] else (foot, back)
+        on_side += x < foot[0]
+        assert y == pytest.approx(a[1] + (x - a[0]) * (b[1] - a[1]) / (b[0] - a[0]), abs=1e-12) and top[1] > 0
+    assert on_side > 0  # the slope's back columns stand over the right side
     assert all(y == 0 for _, y in base_model().main_joints().segmentStarts)
 
 

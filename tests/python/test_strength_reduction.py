@@ -5,8 +5,16 @@ import math
 import pytest
 
 from conftest import run_example
-from toppling.load.strength_reduction import Reduction, Search
+from lattice import R, material
+from yade import O
+from yade.wrapper import ParallelBondMat, SmoothJointMat
+
+from toppling.build import bonding, engines
+from toppling.build.discs import disc
+from toppling.build.engines import broken_bonds
+from toppling.load.strength_reduction import Reduction, Search, first_break_factor
 from toppling.load.tilting import StageCriteria
+from toppling.run.steps import run_steps
 
 EXAMPLE = "examples/verification/strength_reduction.py"
 
@@ -44,3 +52,36 @@ def test_reduction_divides_tan_phi_or_the_angle_and_refuses_other_modes():
         Reduction(friction="sin")
     with pytest.raises(ValueError, match=r"growth = 1.0 is invalid: it must be in \(1, inf\)"):
         Search("x.yade", [[0]], StageCriteria(), growth=1.0)
+
+
+def test_bonds_scope_divides_the_bonds_alone(empty_scene):
+    rock = O.materials.append(ParallelBondMat(bondTensileStrength=1e6, bondCohesion=2e6, bondFrictionAngle=0.4,
+                                              frictionAngle=0.3))
+    joint = O.materials.append(SmoothJointMat(frictionAngle=0.5, tensileStrength=1e5, cohesion=1e5))
+    Reduction(friction="angle", scope="bonds").apply(2.0)
+    rock, joint = O.materials[rock], O.materials[joint]
+    assert (rock.bondTensileStrength, rock.bondCohesion) == (5e5, 1e6)
+    assert rock.bondFrictionAngle == pytest.approx(0.2) and rock.frictionAngle == pytest.approx(0.3)
+    assert (joint.frictionAngle, joint.tensileStrength, joint.cohesion) == (0.5, 1e5, 1e5)
+    with pytest.raises(ValueError, match="scope = 'joints' is invalid"):
+        Reduction(scope="joints")
+
+
+@pytest.mark.parametrize("force", [(2e3, 0.0), (0.0, 1e3)])  # pulled; pushed sideways (shear and bending)
+def test_a_bond_holds_just_below_its_first_break_factor_and_breaks_just_above(empty_scene, force):
+    mat = material()
+    mat.bondTensileStrength, mat.bondCohesion = 1e6, 1e6
+    fixed, loaded = (O.bodies.append(disc((x, 0), R, mat, fixed=x == 0)) for x in (0, 2 * R))
+    O.engines = engines.engines(gravity=(0, 0, 0), local_damping=0.7)
+    bonding.bond_within_gap(0.01 * R)
+    O.forces.setPermF(loaded, (force[0], force[1], 0))
+    run_steps(20000)  # to rest under the load
+    reduction = Reduction()
+    first = first_break_factor(reduction)
+    assert 1 < first < 100
+    O.saveTmp("loaded")
+    for factor, breaks in ((0.98 * first, 0), (1.02 * first, 1)):
+        O.loadTmp("loaded")
+        reduction.apply(factor)
+        run_steps(200)
+        assert broken_bonds() == breaks

@@ -55,6 +55,14 @@ def write_summary(out: str, inputs: dict[str, Any], **results: Any) -> str:
     return path
 
 
+def add_to_summary(out: str, **results: Any) -> str:
+    """Add ``results`` to ``<out>/summary.json`` (written before by write_summary); returns its path."""
+    with open(summary_path(out)) as f:
+        summary = json.load(f)
+    summary.update(results)
+    return write_summary(out, summary.pop("inputs"), **summary)
+
+
 def discard_summary(out: str) -> None:
     """Remove a previous run's ``<out>/summary.json``, so that a run starting afresh in ``out``
     never leaves it to be read as its own."""

@@ -25,18 +25,24 @@ from toppling.load import tilting
 from toppling.run.steps import run_checked
 
 FRICTION = ("tan", "angle", "none")
+SCOPES = ("all", "bonds")
 
 
 @dataclass(frozen=True)
 class Reduction:
     """What F divides: tensile strengths and cohesions (``strengths``), and friction
-    (``friction``: "tan" divides tan φ, "angle" divides φ, "none" leaves it)."""
+    (``friction``: "tan" divides tan φ, "angle" divides φ, "none" leaves it); of everything
+    (``scope`` "all": bonds, disc contacts, joints) or of the parallel bonds alone ("bonds": their
+    tensile strength, cohesion and friction angle, as the thesis' Table 5-16)."""
     strengths: bool = True
     friction: str = "tan"
+    scope: str = "all"
 
     def __post_init__(self):
         if self.friction not in FRICTION:
             raise ValueError(f"friction = {self.friction!r} is invalid: it must be one of {FRICTION}")
+        if self.scope not in SCOPES:
+            raise ValueError(f"scope = {self.scope!r} is invalid: it must be one of {SCOPES}")
 
     def tan_friction(self, tan_phi: float, factor: float) -> float:
         if self.friction == "tan":
@@ -53,14 +59,16 @@ class Reduction:
         interaction (those that exist) by ``factor``: once, on a freshly loaded scene."""
         require("factor", factor, "(0, inf)")
         strength = factor if self.strengths else 1.0
+        rest = factor if self.scope == "all" else 1.0  # what bonds alone leave as it is
         for mat in O.materials:
             if isinstance(mat, ParallelBondMat):
                 mat.bondTensileStrength, mat.bondCohesion = mat.bondTensileStrength / strength, mat.bondCohesion / strength
-                mat.frictionAngle, mat.bondFrictionAngle = self.angle(mat.frictionAngle, factor), \
+                mat.frictionAngle, mat.bondFrictionAngle = self.angle(mat.frictionAngle, rest), \
                     self.angle(mat.bondFrictionAngle, factor)
             elif isinstance(mat, SmoothJointMat):
-                mat.tensileStrength, mat.cohesion = mat.tensileStrength / strength, mat.cohesion / strength
-                mat.frictionAngle = self.angle(mat.frictionAngle, factor)
+                joint = strength if self.scope == "all" else 1.0
+                mat.tensileStrength, mat.cohesion = mat.tensileStrength / joint, mat.cohesion / joint
+                mat.frictionAngle = self.angle(mat.frictionAngle, rest)
         for i in O.interactions:
             phys = i.phys
             if isinstance(phys, ParallelBondPhys):
@@ -68,10 +76,46 @@ class Reduction:
                     phys.bondCohesion / strength
                 phys.bondTanFriction = self.tan_friction(phys.bondTanFriction, factor)
             elif isinstance(phys, SmoothJointPhys):
-                phys.tensileStrength, phys.cohesion = phys.tensileStrength / strength, phys.cohesion / strength
+                joint = strength if self.scope == "all" else 1.0
+                phys.tensileStrength, phys.cohesion = phys.tensileStrength / joint, phys.cohesion / joint
             else:
                 continue
-            phys.tangensOfFrictionAngle = self.tan_friction(phys.tangensOfFrictionAngle, factor)
+            phys.tangensOfFrictionAngle = self.tan_friction(phys.tangensOfFrictionAngle, rest)
+
+
+def first_break_factor(reduction: Reduction) -> float:
+    """The smallest F at which ``reduction`` would break an intact parallel bond of the scene as it
+    stands (its last step's stresses held): below it, dividing the strengths changes nothing, and
+    a scene at rest stays at rest. Tension: σ_max ≥ σ_t / F; shear: τ ≥ c / F + σ tan φ(F), where
+    σ is the bond's mean normal stress (compression positive). inf without intact bonds."""
+    first = math.inf
+    for i in O.interactions:
+        phys = i.phys
+        if not isinstance(phys, ParallelBondPhys) or phys.bondState != 1:
+            continue
+        if phys.bondSigmaMax > 0:
+            first = min(first, phys.bondTensileStrength / phys.bondSigmaMax if reduction.strengths else math.inf)
+        first = min(first, _shear_break_factor(reduction, phys))
+    return first
+
+
+def _shear_break_factor(reduction: Reduction, phys) -> float:
+    """The F at which the bond's shear strength falls to its shear stress (bisection: the strength
+    falls as F grows), inf if it never does below 1e6."""
+    sigma = phys.bondNormalForce / phys.bondArea
+
+    def strength(f: float) -> float:
+        cohesion = phys.bondCohesion / (f if reduction.strengths else 1.0)
+        return cohesion + sigma * reduction.tan_friction(phys.bondTanFriction, f)
+    low, high = 1e-6, 1e6
+    if strength(high) > phys.bondTauMax:
+        return math.inf
+    if strength(low) <= phys.bondTauMax:
+        return low
+    while high / low > 1 + 1e-9:
+        mid = math.sqrt(low * high)
+        low, high = (mid, high) if strength(mid) > phys.bondTauMax else (low, mid)
+    return high
 
 
 @dataclass(frozen=True)

@@ -69,12 +69,14 @@ def merged(joints_: Sequence[BaseJoint], n1: int) -> list[BaseJoint]:
 class SlopeShape:
     """The slope of thesis §5.3.1: height ``height`` [m] at the crest, main joints dipping
     ``joint_dip_deg`` into it, face at ``face_deg`` and top surface at ``top_deg`` to the
-    horizontal (θ and β), columns ``spacing`` [m] wide."""
+    horizontal (θ and β), columns ``spacing`` [m] wide; ``columns`` of them from the toe (0: all
+    that stand above the table plane, up to where the top surface meets it)."""
     height: float
     joint_dip_deg: float
     face_deg: float
     top_deg: float
     spacing: float
+    columns: int = 0
 
     def __post_init__(self):
         require("height", self.height, "(0, inf)")
@@ -83,6 +85,7 @@ class SlopeShape:
         # the face must rise from the table plane and lean no further out than the main joints
         require("face_deg", self.face_deg, f"({self.joint_dip_deg:g}, {90 + self.joint_dip_deg:g})")
         require("spacing", self.spacing, "(0, inf)")
+        require("columns", self.columns, "whole [0, inf)")
 
     @property
     def tilt_deg(self) -> float:
@@ -96,8 +99,10 @@ class SlopeShape:
         top = self.tilt_deg - self.top_deg
         crest = self.height / (math.sin(a) / math.tan(math.radians(face)) + math.cos(a))
         reach = crest / math.tan(math.radians(face)) + crest / math.tan(math.radians(top))
-        return Outline(width=self.spacing, columns=int(reach / self.spacing + 0.5), face_deg=face, top_deg=top,
-                       crest=crest)
+        count = int(reach / self.spacing + 0.5)
+        if self.columns > count:
+            raise ValueError(f"columns = {self.columns} is invalid: the slope has {count} columns above the table plane")
+        return Outline(width=self.spacing, columns=self.columns or count, face_deg=face, top_deg=top, crest=crest)
 
 
 @dataclass
@@ -161,12 +166,20 @@ class EquivalentSlope(BondedDiscs):
     def main_joints(self) -> JointSetGeometry:
         """The joints between neighbouring columns, from the table plane (or the horizontal base,
         ``joints_into_foundation``) up to the taller one's top."""
-        layout, slope = self.layout, math.tan(math.radians(self.shape.tilt_deg))
+        layout = self.layout
         ks = range(1, layout.count)
         tops = [max(layout.heights[k - 1], layout.heights[k]) for k in ks]
         xs = [layout.span(k)[0] for k in ks]
-        bottoms = [-k * layout.width * slope if self.joints_into_foundation else 0.0 for k in ks]
+        bottoms = [self.foundation_floor(x) if self.joints_into_foundation else 0.0 for x in xs]
         return JointSetGeometry(dip=90, segmentStarts=list(zip(xs, bottoms)), segmentEnds=list(zip(xs, tops)))
+
+    def foundation_floor(self, x: float) -> float:
+        """The foundation's lower edge below ``x``: the horizontal base from the toe to its foot,
+        then the vertical side from the foot up to the table plane."""
+        toe, foot, back = self.foundation()
+        if x >= foot[0]:
+            return foot[1] * (toe[0] - x) / (toe[0] - foot[0])
+        return foot[1] * (x - back[0]) / (foot[0] - back[0])
 
     def base_joint_set(self) -> JointSetGeometry:
         spans = [(self.layout.span(j.last)[0], self.layout.span(j.first)[1], j.height) for j in self.base_joints]
