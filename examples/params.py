@@ -127,7 +127,7 @@ GALANDROOD = dict(**TABLE_5_14_DISCS, columns=GALANDROOD_SHAPE["columns"], poros
                   reduction_factor=TABLE_5_16_FACTOR,
                   timestep_safety=0.8, damping=0.0, settle_damping=0.7,
                   chunk=0.05, rest_speed=1e-3, fail_displacement=0.5, max_stage_time=2.0, fail_columns=2,
-                  post_failure_time=1.0, resume=-1, checkpoint_every=600.0, max_wall_time=0.0, exact_resume=0)
+                  post_failure_time=0.2, resume=-1, checkpoint_every=600.0, max_wall_time=0.0, exact_resume=0)
 # m, m, m (Table 5-14), -, -, -; joint_gap [m]: 0, Table 5-15's 1 cm read as the distance within which discs across a joint are paired (our bond
 # gap, 6 cm, pairs them), not as an aperture; s, m/s, m, s, -, s, -, wall s x2
 
