@@ -38,11 +38,15 @@ def main(argv=None) -> int:
         sys.exit(f"toppling-sweep: {e}")
     todo = sum(not p.finished for p in planned)
     print(f"sweep: {len(planned)} lines of {args.table}, {len(planned) - todo} finished already", flush=True)
-    results = {}
+    results = sweep.skipped(planned)
     if todo:
         # a batch system ends a job with SIGTERM: stop as on Ctrl-C, the local cluster (and its runs) with us
         signal.signal(signal.SIGTERM, signal.default_int_handler)
-        client, cluster = sweep.connect(args.scheduler, args.workers)
+        try:
+            client, cluster = sweep.connect(args.scheduler, args.workers)
+        except (OSError, TimeoutError) as e:
+            sys.exit(f"toppling-sweep: no Dask scheduler at --scheduler {args.scheduler} ({e}): start one "
+                     "(docs/sweeps.md) or leave --scheduler out for a local cluster")
         try:
             results = sweep.execute(planned, client, echo=lambda s: print(s, flush=True))
         except KeyboardInterrupt:
@@ -52,8 +56,6 @@ def main(argv=None) -> int:
             client.close()
             if cluster is not None:
                 cluster.close()
-    else:
-        results = {p.line.number: {"line": p.line.number, "status": "skipped"} for p in planned}
     table = report.rows(planned, results)
     print(report.markdown(table, args.figures.split(",") if args.figures else None))
     if args.csv:

@@ -61,6 +61,11 @@ def finished(line: batch_table.Line, out: str) -> bool:
         return False
 
 
+def skipped(planned: list[Planned]) -> dict[int, dict[str, Any]]:
+    """The results of the lines a sweep need not run."""
+    return {p.line.number: {"line": p.line.number, "status": "skipped"} for p in planned if p.finished}
+
+
 def connect(scheduler: Optional[str], workers: int):
     """A client of the scheduler at ``scheduler`` (an address, or the file ``dask-scheduler
     --scheduler-file`` wrote; Dask's TLS settings from its configuration), or
@@ -88,7 +93,7 @@ def execute(planned: list[Planned], client, echo: Callable[[str], None] = print,
     import cloudpickle
     from distributed import wait
     cloudpickle.register_pickle_by_value(task)
-    results = {p.line.number: {"line": p.line.number, "status": "skipped"} for p in planned if p.finished}
+    results = skipped(planned)
     tag = uuid.uuid4().hex[:8]
     futures = {client.submit(task.run_job, p.job, key=f"toppling-sweep-{tag}-line-{p.line.number}", pure=False): p
                for p in planned if not p.finished}
