@@ -3,7 +3,7 @@ import json
 
 import pytest
 
-from toppling.io.reader import read_run, read_summaries
+from toppling.io.reader import read_run, read_summaries, summary_of
 
 
 def test_a_run_folder_reads_back_its_summary_pictures_and_series(tmp_path):
@@ -27,3 +27,11 @@ def test_summaries_are_read_by_run_name_where_the_name_matches(tmp_path):
         (tmp_path / name / "summary.json").write_text(json.dumps({"name": name}))
     assert sorted(read_summaries(str(tmp_path), ["ideal_*"])) == ["ideal_seed1", "ideal_seed2"]
     assert len(read_summaries(str(tmp_path))) == 3
+
+
+def test_summary_of_is_empty_until_a_readable_summary_is_there(tmp_path):
+    assert summary_of(str(tmp_path / "missing")) == {}
+    (tmp_path / "summary.json").write_text('{"inputs": {"a": 1}, "fai')  # a run killed while writing it
+    assert summary_of(str(tmp_path)) == {}
+    (tmp_path / "summary.json").write_text(json.dumps({"inputs": {"a": 1}, "failed": False}))
+    assert summary_of(str(tmp_path)) == {"inputs": {"a": 1}, "failed": False}

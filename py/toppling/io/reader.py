@@ -21,6 +21,15 @@ def read_run(out: str) -> dict[str, Any]:
             "paraview": {os.path.splitext(os.path.basename(p))[0]: p for p in series}}
 
 
+def summary_of(out: str) -> dict[str, Any]:
+    """``<out>/summary.json``, or an empty dict while the run has not written one (or left it unreadable)."""
+    try:
+        with open(os.path.join(out, "summary.json")) as f:
+            return json.load(f)
+    except (OSError, ValueError):
+        return {}
+
+
 def read_summaries(folder: str, patterns: Sequence[str] = ("*",)) -> dict[str, dict]:
     """Summaries by run name (the out folder's name) of the runs in ``folder`` whose name matches
     one of the shell-style ``patterns``."""

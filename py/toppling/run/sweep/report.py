@@ -3,21 +3,12 @@ with the last line of their logs."""
 from __future__ import annotations
 
 import csv
-import json
-import os
 from typing import Any, Optional, Sequence
 
+from toppling.io.reader import summary_of
 from toppling.run.sweep.sweep import Planned
 
 MAX_DEFAULT_FIGURES = 6
-
-
-def summary(out: str) -> dict[str, Any]:
-    try:
-        with open(os.path.join(out, "summary.json")) as f:
-            return json.load(f)
-    except (OSError, ValueError):
-        return {}
 
 
 def scalars(s: dict[str, Any]) -> dict[str, Any]:
@@ -33,7 +24,7 @@ def rows(planned: Sequence[Planned], results: dict[int, dict[str, Any]]) -> list
         r = results.get(p.line.number, {"status": "not run"})
         table.append({"line": p.line.number, "description": p.line.description, "status": r["status"],
                       "wall_time": r.get("wall_time"), "host": r.get("host"), "out": p.out, "log": p.job["log"],
-                      "last_log_line": r.get("last_log_line"), **scalars(summary(p.out))})
+                      "last_log_line": r.get("last_log_line"), **scalars(summary_of(p.out))})
     return table
 
 

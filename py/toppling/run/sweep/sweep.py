@@ -2,7 +2,6 @@
 progress on the console while the tasks run."""
 from __future__ import annotations
 
-import json
 import logging
 import math
 import os
@@ -11,6 +10,7 @@ import uuid
 from dataclasses import dataclass
 from typing import Any, Callable, Optional
 
+from toppling.io.reader import summary_of
 from toppling.run.sweep import batch_table, task
 
 REPO = os.environ.get("TOPPLING_REPO") or os.path.abspath(os.path.join(os.path.dirname(__file__), *[os.pardir] * 4))
@@ -54,11 +54,7 @@ def plan(table_path: str, script: str, lines: Optional[str] = None, cwd: Optiona
 
 def finished(line: batch_table.Line, out: str) -> bool:
     """A summary.json in ``out`` written by a run of the same inputs."""
-    try:
-        with open(os.path.join(out, "summary.json")) as f:
-            return batch_table.same_inputs(line, json.load(f))
-    except (OSError, ValueError):
-        return False
+    return batch_table.same_inputs(line, summary_of(out))
 
 
 def skipped(planned: list[Planned]) -> dict[int, dict[str, Any]]:
