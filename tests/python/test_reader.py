@@ -35,3 +35,10 @@ def test_summary_of_is_empty_until_a_readable_summary_is_there(tmp_path):
     assert summary_of(str(tmp_path)) == {}
     (tmp_path / "summary.json").write_text(json.dumps({"inputs": {"a": 1}, "failed": False}))
     assert summary_of(str(tmp_path)) == {"inputs": {"a": 1}, "failed": False}
+
+
+def test_results_added_to_a_summary_keep_its_inputs_and_figures(tmp_path):
+    from toppling.io import output
+    output.write_summary(str(tmp_path), {"a": 1}, failed=False)
+    output.add_to_summary(str(tmp_path), first_break_factor=12.5)
+    assert summary_of(str(tmp_path)) == {"inputs": {"a": 1}, "failed": False, "first_break_factor": 12.5}
