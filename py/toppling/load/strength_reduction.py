@@ -60,13 +60,13 @@ class Reduction:
         require("factor", factor, "(0, inf)")
         strength = factor if self.strengths else 1.0
         rest = factor if self.scope == "all" else 1.0  # what bonds alone leave as it is
+        joint = strength if self.scope == "all" else 1.0
         for mat in O.materials:
             if isinstance(mat, ParallelBondMat):
                 mat.bondTensileStrength, mat.bondCohesion = mat.bondTensileStrength / strength, mat.bondCohesion / strength
                 mat.frictionAngle, mat.bondFrictionAngle = self.angle(mat.frictionAngle, rest), \
                     self.angle(mat.bondFrictionAngle, factor)
             elif isinstance(mat, SmoothJointMat):
-                joint = strength if self.scope == "all" else 1.0
                 mat.tensileStrength, mat.cohesion = mat.tensileStrength / joint, mat.cohesion / joint
                 mat.frictionAngle = self.angle(mat.frictionAngle, rest)
         for i in O.interactions:
@@ -76,7 +76,6 @@ class Reduction:
                     phys.bondCohesion / strength
                 phys.bondTanFriction = self.tan_friction(phys.bondTanFriction, factor)
             elif isinstance(phys, SmoothJointPhys):
-                joint = strength if self.scope == "all" else 1.0
                 phys.tensileStrength, phys.cohesion = phys.tensileStrength / joint, phys.cohesion / joint
             else:
                 continue

@@ -9,6 +9,7 @@ from toppling.io.reader import summary_of
 from toppling.run.sweep.sweep import Planned
 
 MAX_DEFAULT_FIGURES = 6
+ROW = ("line", "description", "status", "wall_time", "host", "out", "log", "last_log_line")  # before the figures
 
 
 def scalars(s: dict[str, Any]) -> dict[str, Any]:
@@ -30,7 +31,7 @@ def rows(planned: Sequence[Planned], results: dict[int, dict[str, Any]]) -> list
 
 def default_figures(table: list[dict[str, Any]]) -> list[str]:
     """The scalar figures every summary has, in the first one's order, at most six."""
-    fixed = {"line", "description", "status", "wall_time", "host", "out", "log", "last_log_line"}
+    fixed = set(ROW)
     with_summary = [r for r in table if set(r) - fixed]
     if not with_summary:
         return []
