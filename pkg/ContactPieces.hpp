@@ -106,8 +106,15 @@ namespace toppling {
 				torque[t].assign(bodies, Vector3r::Zero());
 			}
 		}
-		void addForce(Body::id_t id, const Vector3r& f) { force[thread()][id] += f; }
-		void addTorque(Body::id_t id, const Vector3r& t) { torque[thread()][id] += t; }
+		// f on body 1, -f on body 2, torques t1 and t2 (one thread lookup for the four)
+		void addPair(Body::id_t id1, Body::id_t id2, const Vector3r& f, const Vector3r& t1, const Vector3r& t2)
+		{
+			const int t = thread();
+			force[t][id1] += f;
+			force[t][id2] += -f;
+			torque[t][id1] += t1;
+			torque[t][id2] += t2;
+		}
 		void addTo(ForceContainer& forces) const
 		{
 			for (size_t t = 0; t < force.size(); ++t)
@@ -129,9 +136,22 @@ namespace toppling {
 		}
 	};
 
+	// One addForce and one addTorque per body: every call writes a flag shared by all threads in
+	// YADE's ForceContainer, so fewer calls scale better.
+	inline void addPair(ForceContainer& forces, Body::id_t id1, Body::id_t id2, const Vector3r& f, const Vector3r& t1, const Vector3r& t2)
+	{
+		forces.addForce(id1, f);
+		forces.addForce(id2, -f);
+		forces.addTorque(id1, t1);
+		forces.addTorque(id2, t2);
+	}
+	inline void addPair(ForceSums& sums, Body::id_t id1, Body::id_t id2, const Vector3r& f, const Vector3r& t1, const Vector3r& t2)
+	{
+		sums.addPair(id1, id2, f, t1, t2);
+	}
+
 	// Applies force f on body 1 (-f on body 2) at the contact point and a couple m on body 2 (-m on
-	// body 1), with one addForce and one addTorque per body: every call writes a flag shared by
-	// all threads in YADE's ForceContainer, so fewer calls scale better.
+	// body 1).
 	template <class Forces>
 	inline void applyContact(
 	        Forces&         forces,
@@ -143,10 +163,7 @@ namespace toppling {
 	        const Vector3r& f,
 	        const Vector3r& m)
 	{
-		forces.addForce(id1, f);
-		forces.addForce(id2, -f);
-		forces.addTorque(id1, (point - pos1).cross(f) - m);
-		forces.addTorque(id2, -(point - pos2).cross(f) + m);
+		addPair(forces, id1, id2, f, (point - pos1).cross(f) - m, -(point - pos2).cross(f) + m);
 	}
 
 	// The turn of the contact frame over one step, as ScGeom::precompute forms it from the
@@ -159,7 +176,7 @@ namespace toppling {
 		        , twist((dt * 0.5 * before.dot(spin1 + spin2)) * before)
 		{
 		}
-		Vector3r& turn(Vector3r& shear) const
+		__attribute__((always_inline)) Vector3r& turn(Vector3r& shear) const
 		{
 			shear -= shear.cross(tilt);
 			shear -= shear.cross(twist);

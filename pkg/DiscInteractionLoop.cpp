@@ -1,10 +1,16 @@
 #include "DiscInteractionLoop.hpp"
 #include "ParallelBondLaw.hpp"
 #include "SmoothJoint.hpp"
-#include <array>
+#include <core/Omega.hpp>
 #include <core/Scene.hpp>
+#include <core/TimeStepper.hpp>
+#include <pkg/common/ForceResetter.hpp>
+#include <pkg/common/InsertionSortCollider.hpp>
+#include <pkg/common/PeriodicEngines.hpp>
 #include <pkg/common/Sphere.hpp>
+#include <pkg/dem/NewtonIntegrator.hpp>
 #include <pkg/dem/ScGeom.hpp>
+#include <array>
 
 namespace yade {
 
@@ -39,6 +45,8 @@ void DiscInteractionLoop::action()
 {
 	const bool removeUnseen = scene->interactions->iterColliderLastRun >= 0 && scene->interactions->iterColliderLastRun == scene->iter;
 	if (scene->isPeriodic || !callbacks.empty() || loopOnSortedInteractions || removeUnseen) {
+		flush();
+		arraysCurrent = false;
 		InteractionLoop::action();
 		return;
 	}
@@ -55,23 +63,45 @@ void DiscInteractionLoop::action()
 			discs     = f;
 			detection = ig2->interactionDetectionFactor;
 		}
-	const shared_ptr<LawFunctor> bonds = lawOf<Law2_ScGeom_ParallelBondPhys_ParallelBond>(*lawDispatcher);
-	const shared_ptr<LawFunctor> joints = lawOf<Law2_ScGeom_SmoothJointPhys_SmoothJoint>(*lawDispatcher);
+	const shared_ptr<LawFunctor> bondLaw = lawOf<Law2_ScGeom_ParallelBondPhys_ParallelBond>(*lawDispatcher);
+	const shared_ptr<LawFunctor> joints  = lawOf<Law2_ScGeom_SmoothJointPhys_SmoothJoint>(*lawDispatcher);
+	auto* const                  law     = static_cast<Law2_ScGeom_ParallelBondPhys_ParallelBond*>(bondLaw.get());
+	// The bonds in the array: within runSteps, unless their objects would have to be read back at once.
+	bool arrays = inRunSteps && bondLaw && discs && ((arraysCurrent && arraysValid()) || readerBeforeNextLoop() != Reader::any);
+	if (arrays && !(arraysCurrent && arraysValid())) build(discs.get(), bondLaw.get());
+	if (!arrays) {
+		flush();
+		arraysCurrent = false;
+	}
 	gather();
 #ifdef YADE_OPENMP
-	sums.reset(ompThreads > 0 ? std::min(ompThreads, omp_get_max_threads()) : omp_get_max_threads(), motion.size());
+	const int threads = ompThreads > 0 ? std::min(ompThreads, omp_get_max_threads()) : omp_get_max_threads();
 #else
-	sums.reset(1, motion.size());
+	const int threads = 1;
 #endif
-	const SumsInUse inUse({ bonds.get(), joints.get() }, &sums);
+	sums.reset(threads, motion.size());
+	promoted.assign(threads, {});
+	const SumsInUse inUse({ bondLaw.get(), joints.get() }, &sums);
 
 	InteractionContainer& interactions = *scene->interactions;
 	const long            size         = long(interactions.size());
 #ifdef YADE_OPENMP
-#pragma omp parallel for schedule(guided) num_threads(ompThreads > 0 ? std::min(ompThreads, omp_get_max_threads()) : omp_get_max_threads())
+#pragma omp parallel for schedule(guided) num_threads(threads)
 #endif
 	for (long i = 0; i < size; i++) {
-		const shared_ptr<Interaction>& I  = interactions[i];
+		if (arrays && slots[i].bond >= 0) {
+			Slot&                 slot = slots[i];
+			toppling::BondEntry&  bond = bonds[slot.bond];
+			toppling::DiscContact c    = contact(slot.id1, slot.id2);
+			c.refR1                    = bond.refR1;
+			c.refR2                    = bond.refR2;
+			if (!law->interact(c, bond, motion[slot.id1], motion[slot.id2])) {
+				scene->interactions->requestErase(bond.interaction);
+				slot.bond = -1; // its physics is gone with it
+			}
+			continue;
+		}
+		const shared_ptr<Interaction>& I   = interactions[i];
 		const Body::id_t               id1 = I->getId1(), id2 = I->getId2();
 		const shared_ptr<Body>&        b1 = Body::byId(id1, scene);
 		const shared_ptr<Body>&        b2 = Body::byId(id2, scene);
@@ -79,28 +109,159 @@ void DiscInteractionLoop::action()
 			scene->interactions->requestErase(I);
 			continue;
 		}
-		const auto& law  = I->functorCache.constLaw;
-		const bool  disc = discs && I->functorCache.geom == discs;
+		const auto& cached = I->functorCache.constLaw;
+		const bool  disc   = discs && I->functorCache.geom == discs;
 		if (disc && !I->isReal() && apart(id1, id2, detection)) continue; // Ig2_Sphere_Sphere_ScGeom's first test
 		// an interaction made explicitly (utils.createInteraction) has no law cached yet: dispatched once
-		if (!(disc && I->isReal() && law)) {
+		if (!(disc && I->isReal() && cached)) {
 			if (dispatched(I, b1, b2) && !I->functorCache.constLaw->go(I->geom, I->phys, I.get())) scene->interactions->requestErase(I);
+			else if (arrays && disc && I->isReal() && I->functorCache.constLaw == bondLaw)
+#ifdef YADE_OPENMP
+				promoted[omp_get_thread_num()].push_back(i);
+#else
+				promoted[0].push_back(i);
+#endif
 			continue;
 		}
 		auto& geom = *static_cast<ScGeom*>(I->geom.get());
 		updateDiscPair(geom, id1, id2);
 		bool keep;
-		if (law == bonds)
-			keep = static_cast<Law2_ScGeom_ParallelBondPhys_ParallelBond*>(law.get())
-			               ->interact(*I, geom, *static_cast<ParallelBondPhys*>(I->phys.get()), motion[id1], motion[id2]);
-		else if (law == joints)
-			keep = static_cast<Law2_ScGeom_SmoothJointPhys_SmoothJoint*>(law.get())
+		if (cached == bondLaw) keep = law->interact(*I, geom, *static_cast<ParallelBondPhys*>(I->phys.get()), motion[id1], motion[id2]);
+		else if (cached == joints)
+			keep = static_cast<Law2_ScGeom_SmoothJointPhys_SmoothJoint*>(joints.get())
 			               ->interact(*I, geom, *static_cast<SmoothJointPhys*>(I->phys.get()), motion[id1], motion[id2]);
 		else
-			keep = law->go(I->geom, I->phys, I.get());
+			keep = cached->go(I->geom, I->phys, I.get());
 		if (!keep) scene->interactions->requestErase(I);
 	}
 	sums.addTo(scene->forces);
+	if (!arrays) return;
+	promote();
+	unflushed           = true;
+	const Reader reader = readerBeforeNextLoop(); // a law may have stopped the run in the loop
+	if (reader != Reader::none) flush();
+	if (reader == Reader::any) arraysCurrent = false; // what reads them may also change them
+}
+
+// Runs `steps` steps in this thread; the disc path keeps the bonds in its array between them.
+void DiscInteractionLoop::runSteps(long steps)
+{
+	if (steps < 0) throw std::invalid_argument("steps = " + std::to_string(steps) + ": give 0 or more");
+	if (Omega::instance().isRunning()) throw std::runtime_error("runSteps: the scene is running (O.run); O.pause() it first.");
+	Scene& sc = *Omega::instance().getScene();
+	struct Running { // whatever ends the run, the objects get the bonds' state back
+		DiscInteractionLoop& loop;
+		explicit Running(DiscInteractionLoop& l)
+		        : loop(l)
+		{
+			loop.inRunSteps = true;
+		}
+		~Running()
+		{
+			loop.inRunSteps = false;
+			loop.flush();
+			loop.arraysCurrent = false;
+		}
+	} running(*this);
+	sc.stopAtIter = sc.iter + steps;
+	while (sc.iter < sc.stopAtIter) {
+		sc.moveToNextTimeStep();
+		if (PyErr_CheckSignals() == -1) boost::python::throw_error_already_set(); // Ctrl-C
+	}
+}
+
+// Who may read (or change) the interactions' objects before this loop runs again: Python when
+// control returns to it, a periodic engine when it is due, a time stepper at its update (reads
+// only); an engine not known here may do anything at any step.
+DiscInteractionLoop::Reader DiscInteractionLoop::readerBeforeNextLoop() const
+{
+	if (!inRunSteps || scene->subStepping || scene->iter + 1 >= scene->stopAtIter) return Reader::any;
+	const long next   = scene->iter + 1;
+	Reader     reader = Reader::none;
+	bool       after  = false; // the engines after this one run in this step, the others in the next
+	for (const auto& e : scene->engines) {
+		if (e.get() == this) {
+			after = true;
+			continue;
+		}
+		if (e->dead || dynamic_cast<const ForceResetter*>(e.get()) || dynamic_cast<const InsertionSortCollider*>(e.get())
+		    || dynamic_cast<const NewtonIntegrator*>(e.get()))
+			continue;
+		if (const auto* stepper = dynamic_cast<const TimeStepper*>(e.get())) {
+			if (stepper->active && (after ? scene->iter : next) % stepper->timeStepUpdateInterval == 0) reader = Reader::timeStepper;
+			continue;
+		}
+		const auto* periodic = dynamic_cast<const PeriodicEngine*>(e.get());
+		if (!periodic) return Reader::any;
+		// due at the next step at the latest (a little early for a wall-clock period: it is read later)
+		const PeriodicEngine& p = *periodic;
+		if (p.nDo >= 0 && p.nDone >= p.nDo) continue;
+		if ((p.firstIterRun > 0 && p.nDone == 0) ? p.firstIterRun <= next
+		                                         : (p.iterPeriod > 0 && next - p.iterLast >= p.iterPeriod)
+		                    || (p.virtPeriod > 0 && scene->time + scene->dt - p.virtLast >= p.virtPeriod)
+		                    || (p.realPeriod > 0 && PeriodicEngine::getClock() + 0.1 - p.realLast >= p.realPeriod))
+			return Reader::any;
+	}
+	return reader;
+}
+
+// How often the scene's InsertionSortCollider has run (-1: none): when it runs it inserts and
+// erases interactions, and the container's order changes.
+long DiscInteractionLoop::colliderActions() const
+{
+	for (const auto& e : scene->engines)
+		if (const auto* collider = dynamic_cast<const InsertionSortCollider*>(e.get())) return collider->numAction;
+	return -1;
+}
+
+bool DiscInteractionLoop::arraysValid() const
+{
+	return slots.size() == scene->interactions->size() && colliderActions() == colliderRuns && motion.size() == scene->bodies->size();
+}
+
+// One slot per interaction, in the container's order; a real disc pair under the parallel-bond
+// law gets its entry in `bonds`, taken from its objects.
+void DiscInteractionLoop::build(const IGeomFunctor* discs, const LawFunctor* bondLaw)
+{
+	flush(); // the objects are read below
+	InteractionContainer& interactions = *scene->interactions;
+	slots.resize(interactions.size());
+	bonds.clear();
+	for (size_t i = 0; i < interactions.size(); ++i) {
+		Interaction& I = *interactions[i];
+		slots[i]       = { -1, I.getId1(), I.getId2() };
+		if (!I.isReal() || I.functorCache.geom.get() != discs || I.functorCache.constLaw.get() != bondLaw) continue;
+		if (!Body::byId(I.getId1(), scene) || !Body::byId(I.getId2(), scene)) continue;
+		slots[i].bond = int(bonds.size());
+		bonds.emplace_back(I);
+	}
+	colliderRuns  = colliderActions();
+	arraysCurrent = true;
+	unflushed     = false;
+}
+
+// The rock pairs that came into contact in this loop join the array (their objects are current).
+void DiscInteractionLoop::promote()
+{
+	InteractionContainer& interactions = *scene->interactions;
+	for (const auto& list : promoted)
+		for (long i : list) {
+			slots[i].bond = int(bonds.size());
+			bonds.emplace_back(*interactions[i]);
+		}
+}
+
+// The bonds' state and the geometry their law saw, back into their objects.
+void DiscInteractionLoop::flush()
+{
+	if (!unflushed) return;
+	for (const auto& slot : slots) {
+		if (slot.bond < 0) continue;
+		const toppling::BondEntry& bond = bonds[slot.bond];
+		bond.store();
+		updateDiscPair(static_cast<ScGeom&>(*bond.interaction->geom), slot.id1, slot.id2);
+	}
+	unflushed = false;
 }
 
 // Every body's motion and radius (0: not a sphere), in arrays by id: a pair then reads its two
@@ -113,7 +274,7 @@ void DiscInteractionLoop::gather()
 	const int sphere = Sphere::getClassIndexStatic();
 	for (const auto& b : bodies) {
 		if (!b) continue;
-		motion[b->id] = toppling::Kinematics(*b->state);
+		motion[b->id]      = toppling::Kinematics(*b->state);
 		const Shape* shape = b->shape.get();
 		if (shape && shape->getClassIndex() == sphere) radius[b->id] = static_cast<const Sphere*>(shape)->radius;
 		else if (const auto* derived = dynamic_cast<const Sphere*>(shape))
@@ -131,7 +292,7 @@ bool DiscInteractionLoop::apart(Body::id_t id1, Body::id_t id2, Real detection) 
 // Ig2_Sphere_Sphere_ScGeom::go for an existing, non-periodic contact, in the same order of
 // operations (so that the results are the same to the last bit), without ScGeom::precompute's
 // frame turn and shear increment: our laws form their own (toppling::FrameTurn).
-void DiscInteractionLoop::updateDiscPair(ScGeom& geom, Body::id_t id1, Body::id_t id2) const
+toppling::DiscContact DiscInteractionLoop::contact(Body::id_t id1, Body::id_t id2) const
 {
 	const Vector3r& pos1 = motion[id1].pos;
 	const Real      r1 = radius[id1], r2 = radius[id2];
@@ -139,11 +300,17 @@ void DiscInteractionLoop::updateDiscPair(ScGeom& geom, Body::id_t id1, Body::id_
 	const Real      norm   = normal.norm();
 	normal /= norm;
 	const Real penetrationDepth = r1 + r2 - norm;
-	geom.contactPoint           = pos1 + (r1 - 0.5 * penetrationDepth) * normal;
-	geom.penetrationDepth       = penetrationDepth;
-	geom.radius1                = r1;
-	geom.radius2                = r2;
-	geom.normal                 = normal;
+	return { penetrationDepth, normal, pos1 + (r1 - 0.5 * penetrationDepth) * normal, r1, r2 };
+}
+
+void DiscInteractionLoop::updateDiscPair(ScGeom& geom, Body::id_t id1, Body::id_t id2) const
+{
+	const toppling::DiscContact c = contact(id1, id2);
+	geom.contactPoint             = c.contactPoint;
+	geom.penetrationDepth         = c.penetrationDepth;
+	geom.radius1                  = radius[id1];
+	geom.radius2                  = radius[id2];
+	geom.normal                   = c.normal;
 }
 
 // InteractionLoop's steps for one interaction (geometry, physics, the law's functor); false when
@@ -169,8 +336,8 @@ bool DiscInteractionLoop::dispatched(const shared_ptr<Interaction>& I, const sha
 	}
 	if (!I->functorCache.phys) I->functorCache.phys = physDispatcher->getFunctor2D(b1->material, b2->material, swap);
 	if (!I->functorCache.phys)
-		throw std::runtime_error("Undefined or ambiguous IPhys dispatch for types " + b1->material->getClassName() + " and "
-		                         + b2->material->getClassName() + ".");
+		throw std::runtime_error(
+		        "Undefined or ambiguous IPhys dispatch for types " + b1->material->getClassName() + " and " + b2->material->getClassName() + ".");
 	I->functorCache.phys->go(b1->material, b2->material, I);
 	if (!wasReal) I->iterMadeReal = scene->iter;
 	if (!I->functorCache.constLaw) I->functorCache.constLaw = lawDispatcher->getFunctor2D(I->geom, I->phys, swap);

@@ -1,4 +1,5 @@
 #include "ParallelBondLaw.hpp"
+#include "BondArrays.hpp"
 #include "ContactPieces.hpp"
 #include <core/Omega.hpp>
 #include <core/Scene.hpp>
@@ -16,6 +17,21 @@ bool Law2_ScGeom_ParallelBondPhys_ParallelBond::go(shared_ptr<IGeom>& ig, shared
 
 bool Law2_ScGeom_ParallelBondPhys_ParallelBond::interact(
         const Interaction& I, ScGeom& geom, ParallelBondPhys& phys, const toppling::Kinematics& b1, const toppling::Kinematics& b2)
+{
+	return step(I, geom, phys, b1, b2);
+}
+
+bool Law2_ScGeom_ParallelBondPhys_ParallelBond::interact(
+        const toppling::DiscContact& geom, toppling::BondEntry& bond, const toppling::Kinematics& b1, const toppling::Kinematics& b2)
+{
+	return step(*bond.interaction, geom, bond, b1, b2);
+}
+
+// One step of the law on a pair's geometry and physics: the physics object itself or its entry in
+// the disc path's array of bonds (the same members, the same arithmetic).
+template <class Geom, class Phys>
+bool Law2_ScGeom_ParallelBondPhys_ParallelBond::step(
+        const Interaction& I, const Geom& geom, Phys& phys, const toppling::Kinematics& b1, const toppling::Kinematics& b2)
 {
 	const Real un = geom.penetrationDepth;
 	if (!phys.isBonded() && un < 0) return false;
@@ -57,13 +73,14 @@ bool Law2_ScGeom_ParallelBondPhys_ParallelBond::interact(
 
 	phys.normalForce = (phys.contactNormalForce + phys.bondNormalForce + dampingFn) * n;
 	phys.shearForce  = phys.contactShearForce + phys.bondShearForce;
-	applyForces(I, b1.pos, b2.pos, geom.contactPoint, phys, phys.bondMoment);
+	applyForces(I, b1.pos, b2.pos, geom.contactPoint, phys.normalForce, phys.shearForce, phys.bondMoment);
 	return true;
 }
 
 // Advances the bond by one step; false when it broke (the break is recorded).
+template <class Geom, class Phys>
 bool Law2_ScGeom_ParallelBondPhys_ParallelBond::updateBond(
-        const Interaction& I, const ScGeom& geom, ParallelBondPhys& phys, const toppling::FrameTurn& frame, const Vector3r& du, Real spin)
+        const Interaction& I, const Geom& geom, Phys& phys, const toppling::FrameTurn& frame, const Vector3r& du, Real spin)
 {
 	const Real A = phys.bondArea, Ib = phys.bondInertia;
 	frame.turn(phys.bondShearForce);

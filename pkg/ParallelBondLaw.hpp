@@ -2,6 +2,7 @@
 // bond's failure, and the scene-wide queries built on them (energy, bond counts, time step).
 #pragma once
 
+#include "BondArrays.hpp"
 #include "BreakingLaw.hpp"
 #include "ContactPieces.hpp"
 #include "ParallelBond.hpp"
@@ -14,6 +15,8 @@ public:
 	bool go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip, Interaction* I) override;
 	// go() on the two bodies' kinematics, as given (DiscInteractionLoop gathers them).
 	bool interact(const Interaction& I, ScGeom& geom, ParallelBondPhys& phys, const toppling::Kinematics& b1, const toppling::Kinematics& b2);
+	// The same on a bond held in the disc path's array (its physics object is not touched unless it breaks).
+	bool interact(const toppling::DiscContact& geom, toppling::BondEntry& bond, const toppling::Kinematics& b1, const toppling::Kinematics& b2);
 	Real elasticEnergy() const;
 	int  countBonds(int state) const;
 	Real criticalTimeStep() const;
@@ -41,8 +44,11 @@ public:
 	FUNCTOR2D(ScGeom, ParallelBondPhys);
 
 private:
-	bool updateBond(const Interaction& I, const ScGeom& geom, ParallelBondPhys& phys, const toppling::FrameTurn& frame,
-	                const Vector3r& shearIncrement, Real relativeSpin);
+	template <class Geom, class Phys>
+	bool step(const Interaction& I, const Geom& geom, Phys& phys, const toppling::Kinematics& b1, const toppling::Kinematics& b2);
+	template <class Geom, class Phys>
+	bool
+	updateBond(const Interaction& I, const Geom& geom, Phys& phys, const toppling::FrameTurn& frame, const Vector3r& shearIncrement, Real relativeSpin);
 };
 REGISTER_SERIALIZABLE(Law2_ScGeom_ParallelBondPhys_ParallelBond);
 
