@@ -1,79 +1,63 @@
-// A parallel bond's state held contiguously (the disc path's array of bonds) rather than in its
-// scattered ParallelBondPhys: the same members under the same names, so that the parallel-bond
-// law runs the same arithmetic on either. The physics object stays the record YADE and Python
-// see; DiscInteractionLoop copies an entry into it (store) wherever something else may read it.
+// A parallel bond between two discs moving in the xy-plane, held contiguously in the disc path's
+// array rather than in its scattered ParallelBondPhys, its vectors by their x and y components
+// (in the plane the others are zero). The physics object stays the record YADE and Python see:
+// DiscInteractionLoop copies the entry into it (store) wherever something else may read it.
 #pragma once
 
 #include "ParallelBond.hpp"
 #include <core/Interaction.hpp>
 #include <pkg/dem/ScGeom.hpp>
 
-// Every ParallelBondPhys member the law reads or writes, named once for both copies.
-// clang-format off
-#define TOPPLING_BOND_MEMBERS(X)                                                                                       \
-	X(contactKn) X(contactKs) X(contactDamping) X(contactNormalForce) X(contactShearForce) X(isSlipping)           \
-	X(tangensOfFrictionAngle) X(bondState) X(bondRadius) X(bondArea) X(bondInertia) X(bondKn) X(bondKs)            \
-	X(bondDamping) X(bondTensileStrength) X(bondCohesion) X(bondTanFriction) X(bondRefOverlap) X(bondNormalForce)  \
-	X(bondShearForce) X(bondMoment) X(bondSigmaMax) X(bondTauMax) X(normalBefore) X(normalForce) X(shearForce)
-// clang-format on
-
 namespace yade {
 namespace toppling {
 
-	// What the law reads of a disc pair's geometry, formed from the two discs' centres and radii.
-	struct DiscContact {
-		Real     penetrationDepth;
-		Vector3r normal, contactPoint;
-		Real     refR1, refR2;
-	};
-
-	struct BondEntry {
+	struct DiscBond {
+		// carried from step to step
+		Real nx0, ny0;                // ParallelBondPhys.normalBefore
+		Real fcn, fcsx, fcsy;         // contactNormalForce, contactShearForce
+		Real fbn, fbsx, fbsy, moment; // bondNormalForce, bondShearForce, bondMoment
+		int  state;                   // bondState
+		bool slipping;                // isSlipping
+		Real fnx, fny, fsx, fsy;      // normalForce, shearForce
+		Real sigmaMax, tauMax;        // bondSigmaMax, bondTauMax
+		// constants (a change from Python is taken in when the array is built again)
+		Real              kn, ks, tanPhi, contactDamping, bondDamping; // contact
+		Real              knA, ksA, knI, area, inertia, radius, refOverlap, tensileStrength, cohesion, tanPhiBond;
+		Real              refR1, refR2; // the geometry's reference radii
 		Interaction*      interaction;
 		ParallelBondPhys* phys;
-		Real              contactKn, contactKs, contactDamping, contactNormalForce;
-		Vector3r          contactShearForce;
-		bool              isSlipping;
-		Real              tangensOfFrictionAngle;
-		int               bondState;
-		Real     bondRadius, bondArea, bondInertia, bondKn, bondKs, bondDamping, bondTensileStrength, bondCohesion, bondTanFriction, bondRefOverlap;
-		Real     bondNormalForce;
-		Vector3r bondShearForce;
-		Real     bondMoment, bondSigmaMax, bondTauMax;
-		Vector3r normalBefore, normalForce, shearForce;
-		Real     refR1, refR2; // the geometry's reference radii
 
-		BondEntry(Interaction& I)
+		explicit DiscBond(Interaction& I)
 		        : interaction(&I)
 		        , phys(static_cast<ParallelBondPhys*>(I.phys.get()))
 		{
-			const auto& geom = static_cast<const ScGeom&>(*I.geom);
-			refR1            = geom.refR1;
-			refR2            = geom.refR2;
-#define TOPPLING_LOAD(m) m = phys->m;
-			TOPPLING_BOND_MEMBERS(TOPPLING_LOAD)
-#undef TOPPLING_LOAD
+			const ParallelBondPhys& p    = *phys;
+			const auto&             geom = static_cast<const ScGeom&>(*I.geom);
+			nx0 = p.normalBefore.x(), ny0 = p.normalBefore.y();
+			fcn = p.contactNormalForce, fcsx = p.contactShearForce.x(), fcsy = p.contactShearForce.y();
+			fbn = p.bondNormalForce, fbsx = p.bondShearForce.x(), fbsy = p.bondShearForce.y(), moment = p.bondMoment;
+			state = p.bondState, slipping = p.isSlipping;
+			fnx = p.normalForce.x(), fny = p.normalForce.y(), fsx = p.shearForce.x(), fsy = p.shearForce.y();
+			sigmaMax = p.bondSigmaMax, tauMax = p.bondTauMax;
+			kn = p.contactKn, ks = p.contactKs, tanPhi = p.tangensOfFrictionAngle, contactDamping = p.contactDamping;
+			bondDamping = p.bondDamping;
+			// as the law forms them: (k A) x, so the same products
+			knA = p.bondKn * p.bondArea, ksA = p.bondKs * p.bondArea, knI = p.bondKn * p.bondInertia;
+			area = p.bondArea, inertia = p.bondInertia, radius = p.bondRadius, refOverlap = p.bondRefOverlap;
+			tensileStrength = p.bondTensileStrength, cohesion = p.bondCohesion, tanPhiBond = p.bondTanFriction;
+			refR1 = geom.refR1, refR2 = geom.refR2;
 		}
 		void store() const
 		{
-#define TOPPLING_STORE(m) phys->m = m;
-			TOPPLING_BOND_MEMBERS(TOPPLING_STORE)
-#undef TOPPLING_STORE
+			ParallelBondPhys& p  = *phys;
+			p.normalBefore       = Vector3r(nx0, ny0, 0);
+			p.contactNormalForce = fcn, p.contactShearForce = Vector3r(fcsx, fcsy, 0);
+			p.bondNormalForce = fbn, p.bondShearForce = Vector3r(fbsx, fbsy, 0), p.bondMoment = moment;
+			p.bondState = state, p.isSlipping = slipping;
+			p.normalForce = Vector3r(fnx, fny, 0), p.shearForce = Vector3r(fsx, fsy, 0);
+			p.bondSigmaMax = sigmaMax, p.bondTauMax = tauMax;
 		}
-		bool isBonded() const { return bondState == ParallelBondPhys::intact; }
-		// A bond's energy and its end go through the physics object, which also holds the total stiffness.
-		Real bondEnergy() const
-		{
-			store();
-			return phys->bondEnergy();
-		}
-		void setBondState(int state)
-		{
-			phys->setBondState(state);
-			bondState       = state;
-			bondNormalForce = 0;
-			bondShearForce  = Vector3r::Zero();
-			bondMoment      = 0;
-		}
+		bool isBonded() const { return state == ParallelBondPhys::intact; }
 	};
 
 } // namespace toppling

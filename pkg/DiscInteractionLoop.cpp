@@ -90,12 +90,9 @@ void DiscInteractionLoop::action()
 #endif
 	for (long i = 0; i < size; i++) {
 		if (arrays && slots[i].bond >= 0) {
-			Slot&                 slot = slots[i];
-			toppling::BondEntry&  bond = bonds[slot.bond];
-			toppling::DiscContact c    = contact(slot.id1, slot.id2);
-			c.refR1                    = bond.refR1;
-			c.refR2                    = bond.refR2;
-			if (!law->interact(c, bond, motion[slot.id1], motion[slot.id2])) {
+			Slot&               slot = slots[i];
+			toppling::DiscBond& bond = bonds[slot.bond];
+			if (!law->interact(bond, slot.id1, slot.id2, motion[slot.id1], motion[slot.id2], radius[slot.id1], radius[slot.id2])) {
 				scene->interactions->requestErase(bond.interaction);
 				slot.bond = -1; // its physics is gone with it
 			}
@@ -230,8 +227,7 @@ void DiscInteractionLoop::build(const IGeomFunctor* discs, const LawFunctor* bon
 	for (size_t i = 0; i < interactions.size(); ++i) {
 		Interaction& I = *interactions[i];
 		slots[i]       = { -1, I.getId1(), I.getId2() };
-		if (!I.isReal() || I.functorCache.geom.get() != discs || I.functorCache.constLaw.get() != bondLaw) continue;
-		if (!Body::byId(I.getId1(), scene) || !Body::byId(I.getId2(), scene)) continue;
+		if (!I.isReal() || I.functorCache.geom.get() != discs || I.functorCache.constLaw.get() != bondLaw || !inPlane(I)) continue;
 		slots[i].bond = int(bonds.size());
 		bonds.emplace_back(I);
 	}
@@ -246,9 +242,25 @@ void DiscInteractionLoop::promote()
 	InteractionContainer& interactions = *scene->interactions;
 	for (const auto& list : promoted)
 		for (long i : list) {
+			if (!inPlane(*interactions[i])) continue;
 			slots[i].bond = int(bonds.size());
 			bonds.emplace_back(*interactions[i]);
 		}
+}
+
+// Whether both discs stay in one plane z = const. and turn about z only (as blockedDOFs "zXY", or
+// a body not moved by forces and at rest out of the plane): the array's law works on x and y.
+bool DiscInteractionLoop::inPlane(const Interaction& I) const
+{
+	const Body* b1 = Body::byId(I.getId1(), scene).get();
+	const Body* b2 = Body::byId(I.getId2(), scene).get();
+	if (!b1 || !b2 || b1->state->pos.z() != b2->state->pos.z()) return false;
+	const unsigned outOfPlane = State::DOF_Z | State::DOF_RX | State::DOF_RY;
+	for (const Body* b : { b1, b2 }) {
+		const State& s = *b->state;
+		if ((b->isDynamic() && (s.blockedDOFs & outOfPlane) != outOfPlane) || s.vel.z() != 0 || s.angVel.x() != 0 || s.angVel.y() != 0) return false;
+	}
+	return true;
 }
 
 // The bonds' state and the geometry their law saw, back into their objects.
@@ -257,7 +269,7 @@ void DiscInteractionLoop::flush()
 	if (!unflushed) return;
 	for (const auto& slot : slots) {
 		if (slot.bond < 0) continue;
-		const toppling::BondEntry& bond = bonds[slot.bond];
+		const toppling::DiscBond& bond = bonds[slot.bond];
 		bond.store();
 		updateDiscPair(static_cast<ScGeom&>(*bond.interaction->geom), slot.id1, slot.id2);
 	}
@@ -292,7 +304,7 @@ bool DiscInteractionLoop::apart(Body::id_t id1, Body::id_t id2, Real detection) 
 // Ig2_Sphere_Sphere_ScGeom::go for an existing, non-periodic contact, in the same order of
 // operations (so that the results are the same to the last bit), without ScGeom::precompute's
 // frame turn and shear increment: our laws form their own (toppling::FrameTurn).
-toppling::DiscContact DiscInteractionLoop::contact(Body::id_t id1, Body::id_t id2) const
+void DiscInteractionLoop::updateDiscPair(ScGeom& geom, Body::id_t id1, Body::id_t id2) const
 {
 	const Vector3r& pos1 = motion[id1].pos;
 	const Real      r1 = radius[id1], r2 = radius[id2];
@@ -300,17 +312,11 @@ toppling::DiscContact DiscInteractionLoop::contact(Body::id_t id1, Body::id_t id
 	const Real      norm   = normal.norm();
 	normal /= norm;
 	const Real penetrationDepth = r1 + r2 - norm;
-	return { penetrationDepth, normal, pos1 + (r1 - 0.5 * penetrationDepth) * normal, r1, r2 };
-}
-
-void DiscInteractionLoop::updateDiscPair(ScGeom& geom, Body::id_t id1, Body::id_t id2) const
-{
-	const toppling::DiscContact c = contact(id1, id2);
-	geom.contactPoint             = c.contactPoint;
-	geom.penetrationDepth         = c.penetrationDepth;
-	geom.radius1                  = radius[id1];
-	geom.radius2                  = radius[id2];
-	geom.normal                   = c.normal;
+	geom.contactPoint           = pos1 + (r1 - 0.5 * penetrationDepth) * normal;
+	geom.penetrationDepth       = penetrationDepth;
+	geom.radius1                = r1;
+	geom.radius2                = r2;
+	geom.normal                 = normal;
 }
 
 // InteractionLoop's steps for one interaction (geometry, physics, the law's functor); false when

@@ -7,7 +7,7 @@
 // subclass.
 //
 // Within runSteps(), whose end is known, the parallel bonds' state is held in an array (one
-// BondEntry per bonded or touching rock pair, in the interactions' order) rather than read from
+// toppling::DiscBond per bonded or touching pair of discs in the xy-plane, in the interactions' order) rather than read from
 // and written to every pair's scattered objects; the objects get it back (flush) wherever anything
 // else may read them: at the end of runSteps (also when it ends by an exception), before an engine
 // that reads interactions runs. After Python has had the scene the array is built again from the
@@ -56,7 +56,7 @@ private:
 	std::vector<Real>                 radius; // by body id; 0: not a sphere
 	toppling::ForceSums               sums;   // what the laws add during the loop
 	std::vector<Slot>                 slots;
-	std::vector<toppling::BondEntry>  bonds;
+	std::vector<toppling::DiscBond>   bonds;
 	std::vector<std::vector<long>>    promoted;              // per thread: interactions that became bonds' this step
 	bool                              arraysCurrent = false; // `slots` and `bonds` hold the scene's interactions
 	bool                              unflushed     = false; // `bonds` holds state the objects do not
@@ -64,13 +64,13 @@ private:
 	long                              colliderRuns  = -1;    // the collider's numAction when `slots` were built
 	void                              gather();
 	bool                              dispatched(const shared_ptr<Interaction>& I, const shared_ptr<Body>& b1, const shared_ptr<Body>& b2);
-	toppling::DiscContact             contact(Body::id_t id1, Body::id_t id2) const;
 	void                              updateDiscPair(ScGeom& geom, Body::id_t id1, Body::id_t id2) const;
 	bool                              apart(Body::id_t id1, Body::id_t id2, Real detection) const;
 	Reader                            readerBeforeNextLoop() const;
 	long                              colliderActions() const;
 	bool                              arraysValid() const;
 	void                              build(const IGeomFunctor* discs, const LawFunctor* bondLaw);
+	bool                              inPlane(const Interaction& I) const;
 	void                              promote();
 	void                              flush();
 };

@@ -18,21 +18,6 @@ bool Law2_ScGeom_ParallelBondPhys_ParallelBond::go(shared_ptr<IGeom>& ig, shared
 bool Law2_ScGeom_ParallelBondPhys_ParallelBond::interact(
         const Interaction& I, ScGeom& geom, ParallelBondPhys& phys, const toppling::Kinematics& b1, const toppling::Kinematics& b2)
 {
-	return step(I, geom, phys, b1, b2);
-}
-
-bool Law2_ScGeom_ParallelBondPhys_ParallelBond::interact(
-        const toppling::DiscContact& geom, toppling::BondEntry& bond, const toppling::Kinematics& b1, const toppling::Kinematics& b2)
-{
-	return step(*bond.interaction, geom, bond, b1, b2);
-}
-
-// One step of the law on a pair's geometry and physics: the physics object itself or its entry in
-// the disc path's array of bonds (the same members, the same arithmetic).
-template <class Geom, class Phys>
-bool Law2_ScGeom_ParallelBondPhys_ParallelBond::step(
-        const Interaction& I, const Geom& geom, Phys& phys, const toppling::Kinematics& b1, const toppling::Kinematics& b2)
-{
 	const Real un = geom.penetrationDepth;
 	if (!phys.isBonded() && un < 0) return false;
 
@@ -78,9 +63,8 @@ bool Law2_ScGeom_ParallelBondPhys_ParallelBond::step(
 }
 
 // Advances the bond by one step; false when it broke (the break is recorded).
-template <class Geom, class Phys>
 bool Law2_ScGeom_ParallelBondPhys_ParallelBond::updateBond(
-        const Interaction& I, const Geom& geom, Phys& phys, const toppling::FrameTurn& frame, const Vector3r& du, Real spin)
+        const Interaction& I, const ScGeom& geom, ParallelBondPhys& phys, const toppling::FrameTurn& frame, const Vector3r& du, Real spin)
 {
 	const Real A = phys.bondArea, Ib = phys.bondInertia;
 	frame.turn(phys.bondShearForce);
@@ -100,6 +84,94 @@ bool Law2_ScGeom_ParallelBondPhys_ParallelBond::updateBond(
 	recordBreak(I, geom.contactPoint, geom.normal, 2 * phys.bondRadius, mode, phys.bondEnergy());
 	phys.setBondState(mode);
 	return false;
+}
+
+// interact() for two discs in the xy-plane, on their plane components: the same operations in
+// the same order on every component that is not zero in the plane (the frame's twist, n.(w1+w2)
+// n, is zero there), so the same results to the last bit. The geometry is formed here, as
+// DiscInteractionLoop::updateDiscPair forms it.
+bool Law2_ScGeom_ParallelBondPhys_ParallelBond::interact(
+        toppling::DiscBond& b, Body::id_t id1, Body::id_t id2, const toppling::Kinematics& k1, const toppling::Kinematics& k2, Real r1, Real r2)
+{
+	const Real dx = (k2.pos.x() + Real(0)) - k1.pos.x(), dy = (k2.pos.y() + Real(0)) - k1.pos.y();
+	const Real norm = math::sqrt(dx * dx + dy * dy);
+	const Real nx = dx / norm, ny = dy / norm;
+	const Real un = r1 + r2 - norm;
+	if (!b.isBonded() && un < 0) return false;
+	const Real cx = k1.pos.x() + (r1 - 0.5 * un) * nx, cy = k1.pos.y() + (r1 - 0.5 * un) * ny; // contact point
+	const Real w1 = k1.angVel.z(), w2 = k2.angVel.z();
+	const Real vx = (k2.vel.x() - w2 * (cy - k2.pos.y())) - (k1.vel.x() - w1 * (cy - k1.pos.y()));
+	const Real vy = (k2.vel.y() + w2 * (cx - k2.pos.x())) - (k1.vel.y() + w1 * (cx - k1.pos.x()));
+	const Real dt = scene->dt;
+	{
+		const Real r  = toppling::smallerRadius(b.refR1, b.refR2);
+		const Real d2 = (vx * vx + vy * vy) * dt * dt;
+		if (!(math::isfinite(d2) && (r <= 0 || d2 < 0.01 * r * r))) {
+			reportInstability(*b.interaction);
+			return true;
+		}
+	}
+	const Real ux = vx * dt, uy = vy * dt, along = ux * nx + uy * ny;
+	const Real dux = ux - along * nx, duy = uy - along * ny;
+	const Real tilt = b.nx0 * ny - b.ny0 * nx; // the frame's turn about z since the last step
+	b.nx0 = nx, b.ny0 = ny;
+	const auto turn = [tilt](Real& sx, Real& sy) {
+		const Real x = sx - sy * tilt;
+		sy           = sy + sx * tilt;
+		sx           = x;
+	};
+
+	if (un > 0) {
+		turn(b.fcsx, b.fcsy);
+		b.fcn = b.kn * un;
+		b.fcsx -= b.ks * dux, b.fcsy -= b.ks * duy;
+		const Real limit = b.fcn * b.tanPhi, fs = math::sqrt(b.fcsx * b.fcsx + b.fcsy * b.fcsy);
+		b.slipping = !(fs <= limit); // as coulombSlip (a NaN force slips)
+		if (b.slipping) {
+			const Real scale = fs > 0 ? limit / fs : 0;
+			b.fcsx *= scale, b.fcsy *= scale;
+		}
+	} else {
+		b.fcn = b.fcsx = b.fcsy = 0;
+		b.slipping              = false;
+	}
+
+	if (b.isBonded()) {
+		turn(b.fbsx, b.fbsy);
+		b.fbn = b.knA * (un - b.refOverlap);
+		b.fbsx -= b.ksA * dux, b.fbsy -= b.ksA * duy;
+		b.moment -= b.knI * ((w2 - w1) * dt);
+		const Real sigma = b.fbn / b.area; // compression positive
+		b.sigmaMax       = -sigma + math::abs(b.moment) * b.radius / b.inertia;
+		b.tauMax         = math::sqrt(b.fbsx * b.fbsx + b.fbsy * b.fbsy) / b.area;
+		int mode         = ParallelBondPhys::intact;
+		if (b.sigmaMax >= b.tensileStrength) mode = ParallelBondPhys::brokenTension;
+		else if (b.tauMax >= b.cohesion + sigma * b.tanPhiBond)
+			mode = ParallelBondPhys::brokenShear;
+		if (mode != ParallelBondPhys::intact) {
+			b.store();
+			recordBreak(*b.interaction, Vector3r(cx, cy, k1.pos.z()), Vector3r(nx, ny, 0), 2 * b.radius, mode, b.phys->bondEnergy());
+			b.phys->setBondState(mode);
+			b.state = mode;
+			b.fbn = b.fbsx = b.fbsy = b.moment = 0;
+			if (un < 0) return false;
+		}
+	}
+
+	const Real c         = (un > 0 ? b.contactDamping : 0) + (b.isBonded() ? b.bondDamping : 0);
+	const Real dampingFn = c > 0 ? -c * (vx * nx + vy * ny) : 0;
+	const Real fn        = b.fcn + b.fbn + dampingFn;
+	b.fnx = fn * nx, b.fny = fn * ny;
+	b.fsx = b.fcsx + b.fbsx, b.fsy = b.fcsy + b.fbsy;
+	const Real fx = -b.fnx - b.fsx, fy = -b.fny - b.fsy; // on body 1
+	if (!(math::isfinite(fx) && math::isfinite(fy) && math::isfinite(b.moment))) {
+		reportInstability(*b.interaction);
+		return true;
+	}
+	const Real t1 = ((cx - k1.pos.x()) * fy - (cy - k1.pos.y()) * fx) - b.moment;
+	const Real t2 = -((cx - k2.pos.x()) * fy - (cy - k2.pos.y()) * fx) + b.moment;
+	sums->addPair(id1, id2, Vector3r(fx, fy, 0), Vector3r(0, 0, t1), Vector3r(0, 0, t2));
+	return true;
 }
 
 Real Law2_ScGeom_ParallelBondPhys_ParallelBond::elasticEnergy() const

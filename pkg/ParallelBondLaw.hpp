@@ -15,8 +15,10 @@ public:
 	bool go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip, Interaction* I) override;
 	// go() on the two bodies' kinematics, as given (DiscInteractionLoop gathers them).
 	bool interact(const Interaction& I, ScGeom& geom, ParallelBondPhys& phys, const toppling::Kinematics& b1, const toppling::Kinematics& b2);
-	// The same on a bond held in the disc path's array (its physics object is not touched unless it breaks).
-	bool interact(const toppling::DiscContact& geom, toppling::BondEntry& bond, const toppling::Kinematics& b1, const toppling::Kinematics& b2);
+	// The same for two discs in the xy-plane, on a bond held in the disc path's array (its physics
+	// object is not touched unless it breaks; the forces go to `sums`).
+	bool
+	interact(toppling::DiscBond& bond, Body::id_t id1, Body::id_t id2, const toppling::Kinematics& b1, const toppling::Kinematics& b2, Real r1, Real r2);
 	Real elasticEnergy() const;
 	int  countBonds(int state) const;
 	Real criticalTimeStep() const;
@@ -44,11 +46,13 @@ public:
 	FUNCTOR2D(ScGeom, ParallelBondPhys);
 
 private:
-	template <class Geom, class Phys>
-	bool step(const Interaction& I, const Geom& geom, Phys& phys, const toppling::Kinematics& b1, const toppling::Kinematics& b2);
-	template <class Geom, class Phys>
-	bool
-	updateBond(const Interaction& I, const Geom& geom, Phys& phys, const toppling::FrameTurn& frame, const Vector3r& shearIncrement, Real relativeSpin);
+	bool updateBond(
+	        const Interaction&         I,
+	        const ScGeom&              geom,
+	        ParallelBondPhys&          phys,
+	        const toppling::FrameTurn& frame,
+	        const Vector3r&            shearIncrement,
+	        Real                       relativeSpin);
 };
 REGISTER_SERIALIZABLE(Law2_ScGeom_ParallelBondPhys_ParallelBond);
 
