@@ -60,10 +60,11 @@ def build(law_name):
     factor = 1.2 if law_name == "JCFpm" else 1.0  # JCFpm bonds what it detects at step 0
     bo1, ig2 = w.Bo1_Sphere_Aabb(aabbEnlargeFactor=factor), w.Ig2_Sphere_Sphere_ScGeom(interactionDetectionFactor=factor)
     # Each law runs at its own stable time step (GlobalStiffnessTimeStepper), as a user would.
-    loop = w.DiscInteractionLoop if law_name == "fast" else w.InteractionLoop
+    fast = law_name == "fast"
+    loop, newton = (w.DiscInteractionLoop, w.DiscNewtonIntegrator) if fast else (w.InteractionLoop, w.NewtonIntegrator)
     O.engines = [w.ForceResetter(), w.InsertionSortCollider([bo1]), loop([ig2], [ip2], [law2]),
                  w.GlobalStiffnessTimeStepper(timestepSafetyCoefficient=0.5, timeStepUpdateInterval=100),
-                 w.NewtonIntegrator(gravity=(0, -9.81, 0), damping=0.1)]
+                 newton(gravity=(0, -9.81, 0), damping=0.1)]
     if law_name in ("fast", "generic"):
         bonding.bond_within_gap(gap=0.25 * R)
     O.run(1, True)

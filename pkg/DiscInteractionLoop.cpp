@@ -46,7 +46,7 @@ void DiscInteractionLoop::action()
 	const bool removeUnseen = scene->interactions->iterColliderLastRun >= 0 && scene->interactions->iterColliderLastRun == scene->iter;
 	if (scene->isPeriodic || !callbacks.empty() || loopOnSortedInteractions || removeUnseen) {
 		flush();
-		arraysCurrent = false;
+		arraysCurrent = arraysThisStep = false;
 		InteractionLoop::action();
 		return;
 	}
@@ -68,12 +68,16 @@ void DiscInteractionLoop::action()
 	auto* const                  law     = static_cast<Law2_ScGeom_ParallelBondPhys_ParallelBond*>(bondLaw.get());
 	// The bonds in the array: within runSteps, unless their objects would have to be read back at once.
 	bool arrays = inRunSteps && bondLaw && discs && ((arraysCurrent && arraysValid()) || readerBeforeNextLoop() != Reader::any);
+	// the bodies' motion as DiscNewtonIntegrator left it, unless Python may have changed it since
+	const bool moved = arrays && arraysCurrent && motionFresh;
+	motionFresh      = false;
+	arraysThisStep   = arrays;
 	if (arrays && !(arraysCurrent && arraysValid())) build(discs.get(), bondLaw.get());
 	if (!arrays) {
 		flush();
 		arraysCurrent = false;
 	}
-	gather();
+	if (!moved) gather();
 #ifdef YADE_OPENMP
 	const int threads = ompThreads > 0 ? std::min(ompThreads, omp_get_max_threads()) : omp_get_max_threads();
 #else
@@ -132,12 +136,13 @@ void DiscInteractionLoop::action()
 		if (!keep) scene->interactions->requestErase(I);
 	}
 	sums.addTo(scene->forces);
+	lastReader = Reader::any;
 	if (!arrays) return;
 	promote();
-	unflushed           = true;
-	const Reader reader = readerBeforeNextLoop(); // a law may have stopped the run in the loop
-	if (reader != Reader::none) flush();
-	if (reader == Reader::any) arraysCurrent = false; // what reads them may also change them
+	unflushed  = true;
+	lastReader = readerBeforeNextLoop(); // a law may have stopped the run in the loop
+	if (lastReader != Reader::none) flush();
+	if (lastReader == Reader::any) arraysCurrent = false; // what reads them may also change them
 }
 
 // Runs `steps` steps in this thread; the disc path keeps the bonds in its array between them.
@@ -157,7 +162,8 @@ void DiscInteractionLoop::runSteps(long steps)
 		{
 			loop.inRunSteps = false;
 			loop.flush();
-			loop.arraysCurrent = false;
+			loop.settleOrientations();
+			loop.arraysCurrent = loop.arraysThisStep = false;
 		}
 	} running(*this);
 	sc.stopAtIter = sc.iter + steps;
@@ -233,7 +239,9 @@ void DiscInteractionLoop::build(const IGeomFunctor* discs, const LawFunctor* bon
 	}
 	colliderRuns  = colliderActions();
 	arraysCurrent = true;
-	unflushed     = false;
+	++builds;
+	turn.resize(scene->bodies->size(), 0); // a pending turn is kept
+	unflushed = false;
 }
 
 // The rock pairs that came into contact in this loop join the array (their objects are current).
@@ -261,6 +269,21 @@ bool DiscInteractionLoop::inPlane(const Interaction& I) const
 		if ((b->isDynamic() && (s.blockedDOFs & outOfPlane) != outOfPlane) || s.vel.z() != 0 || s.angVel.x() != 0 || s.angVel.y() != 0) return false;
 	}
 	return true;
+}
+
+// The discs' turns about z since their orientations were last written, into State.ori; the
+// integrator defers them (a sine and a cosine per disc and step) while nothing reads them.
+void DiscInteractionLoop::settleOrientations()
+{
+	if (!turnPending) return;
+	for (const auto& b : *scene->bodies) {
+		if (!b || turn[b->id] == 0) continue;
+		State& s = *b->state;
+		s.ori    = Quaternionr(AngleAxisr(turn[b->id], Vector3r::UnitZ())) * s.ori;
+		s.ori.normalize();
+		turn[b->id] = 0;
+	}
+	turnPending = false;
 }
 
 // The bonds' state and the geometry their law saw, back into their objects.

@@ -47,6 +47,7 @@ public:
 	// clang-format on
 
 private:
+	friend class DiscNewtonIntegrator;
 	enum class Reader { none, timeStepper, any }; // who may read the interactions before the next loop
 	struct Slot {                                 // one per interaction, in the container's order
 		int        bond;                      // index in `bonds`; -1: the interaction is handled through its objects
@@ -57,11 +58,17 @@ private:
 	toppling::ForceSums               sums;   // what the laws add during the loop
 	std::vector<Slot>                 slots;
 	std::vector<toppling::DiscBond>   bonds;
-	std::vector<std::vector<long>>    promoted;              // per thread: interactions that became bonds' this step
-	bool                              arraysCurrent = false; // `slots` and `bonds` hold the scene's interactions
-	bool                              unflushed     = false; // `bonds` holds state the objects do not
-	bool                              inRunSteps    = false; // inside runSteps()
-	long                              colliderRuns  = -1;    // the collider's numAction when `slots` were built
+	std::vector<std::vector<long>>    promoted;                     // per thread: interactions that became bonds' this step
+	bool                              arraysCurrent  = false;       // `slots` and `bonds` hold the scene's interactions
+	bool                              unflushed      = false;       // `bonds` holds state the objects do not
+	bool                              inRunSteps     = false;       // inside runSteps()
+	bool                              arraysThisStep = false;       // this step's loop ran on the array
+	bool                              motionFresh    = false;       // DiscNewtonIntegrator wrote `motion` after the last loop
+	long                              builds         = 0;           // how often the array was built
+	Reader                            lastReader     = Reader::any; // who may read the scene after this step's loop
+	std::vector<Real>                 turn;                         // by body id: a disc's turn about z not yet in its State.ori
+	bool                              turnPending  = false;
+	long                              colliderRuns = -1; // the collider's numAction when `slots` were built
 	void                              gather();
 	bool                              dispatched(const shared_ptr<Interaction>& I, const shared_ptr<Body>& b1, const shared_ptr<Body>& b2);
 	void                              updateDiscPair(ScGeom& geom, Body::id_t id1, Body::id_t id2) const;
@@ -73,6 +80,7 @@ private:
 	bool                              inPlane(const Interaction& I) const;
 	void                              promote();
 	void                              flush();
+	void                              settleOrientations();
 };
 REGISTER_SERIALIZABLE(DiscInteractionLoop);
 

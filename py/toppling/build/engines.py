@@ -5,7 +5,8 @@ import math
 from typing import Sequence
 
 from yade import O
-from yade.wrapper import (Bo1_Box_Aabb, Bo1_Sphere_Aabb, Bo1_Wall_Aabb, DiscInteractionLoop, ForceResetter,
+from yade.wrapper import (Bo1_Box_Aabb, Bo1_Sphere_Aabb, Bo1_Wall_Aabb, DiscInteractionLoop, DiscNewtonIntegrator,
+                          ForceResetter,
                           GlobalStiffnessTimeStepper, Ig2_Box_Sphere_ScGeom,
                           Ig2_Sphere_Sphere_ScGeom, Ig2_Wall_Sphere_ScGeom,
                           InsertionSortCollider, InteractionLoop,
@@ -25,7 +26,8 @@ def engines(gravity=(0.0, -G, 0.0), local_damping: float = 0.0,
 
     ``local_damping`` is NewtonIntegrator's non-viscous damping (PFC's local damping);
     ``timestepper`` adds GlobalStiffnessTimeStepper, which sees bond stiffness. ``fast``: the
-    disc path (DiscInteractionLoop), else YADE's generic InteractionLoop (the same results).
+    disc path (DiscInteractionLoop, DiscNewtonIntegrator), else YADE's generic InteractionLoop and
+    NewtonIntegrator (the same results).
     """
     check_damping(local_damping)
     check_safety(safety)
@@ -41,7 +43,7 @@ def engines(gravity=(0.0, -G, 0.0), local_damping: float = 0.0,
     if timestepper:
         loop.append(GlobalStiffnessTimeStepper(timestepSafetyCoefficient=safety,
                                                timeStepUpdateInterval=100))
-    loop.append(NewtonIntegrator(gravity=gravity, damping=local_damping))
+    loop.append((DiscNewtonIntegrator if fast else NewtonIntegrator)(gravity=gravity, damping=local_damping))
     return loop + list(extra)
 
 
@@ -90,14 +92,18 @@ def limit_timestep() -> None:
 
 
 def set_fast(fast: bool) -> None:
-    """Run the scene on the disc path (DiscInteractionLoop) or on YADE's generic InteractionLoop,
-    with the same functors."""
-    for k, engine in enumerate(O.engines):
-        if isinstance(engine, InteractionLoop):
-            functors = [getattr(engine, d).functors for d in ("geomDispatcher", "physDispatcher", "lawDispatcher")]
-            O.engines = O.engines[:k] + [(DiscInteractionLoop if fast else InteractionLoop)(*functors)] + O.engines[k + 1:]
-            return
-    raise LookupError("no InteractionLoop in O.engines; build them with toppling.build.engines.engines()")
+    """Run the scene on the disc path (DiscInteractionLoop, DiscNewtonIntegrator) or on YADE's generic
+    InteractionLoop and NewtonIntegrator, with the same functors and settings."""
+    engines = list(O.engines)
+    loops = [k for k, e in enumerate(engines) if isinstance(e, InteractionLoop)]
+    if not loops:
+        raise LookupError("no InteractionLoop in O.engines; build them with toppling.build.engines.engines()")
+    functors = [getattr(engines[loops[0]], d).functors for d in ("geomDispatcher", "physDispatcher", "lawDispatcher")]
+    engines[loops[0]] = (DiscInteractionLoop if fast else InteractionLoop)(*functors)
+    for k, e in enumerate(engines):
+        if isinstance(e, NewtonIntegrator):
+            engines[k] = (DiscNewtonIntegrator if fast else NewtonIntegrator)(**e.dict())
+    O.engines = engines
 
 
 def functor(cls, dispatcher: str = "lawDispatcher"):
