@@ -76,6 +76,7 @@ TILTING_TABLE_IDEAL = dict(
     arrangement="ideal", rmin=1e-3, rmax=4e-3, porosity=0.18, seed=1, layout_seed=1,  # m, m, -
     bond_tensile_strength=CALIBRATED_BOND_TENSILE_STRENGTH["ideal"], main_joint_friction=0.0,
     base_joint_friction=0.0, joint_stiffness_scale=0.01, bond_gap=0.0, cut_rules=1, joint_pieces=1, z_order=0,
+    disc_path=1,  # 1: DiscInteractionLoop and DiscNewtonIntegrator; 0: YADE's generic ones (the reference, the same results)
     timestep_safety=0.8, damping=0.0, settle_damping=0.7,  # local damping while tilting, on the level table
     start_tilt=26.0, step=2.0, max_tilt=45.0, tilt_rate=50.0, stage_rate=10.0,  # deg, deg, deg, deg/s, deg/s
     chunk=0.02, rest_speed=1e-3, fail_displacement=0.05, max_stage_time=2.0, fail_columns=2,  # s, m/s, m, s, -

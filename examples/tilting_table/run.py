@@ -10,6 +10,7 @@ calibration: docs/cases/tilting_table.md. Running the same command again resumes
 from yade.utils import readParamsFromTable
 
 from examples import params
+from toppling.build import engines
 from toppling.io import output, tilt_report
 from toppling.load import tilting
 from toppling.models import tilting_table
@@ -23,5 +24,6 @@ criteria = tilting.StageCriteria(table.chunk, table.rest_speed, table.fail_displ
                                  table.fail_columns)
 slope = tilting_table.from_params(table, params)
 run = tilting_table.start(slope, protocol, criteria, output.table_inputs(table), table.out, table.resume)
+engines.set_fast(bool(table.disc_path))
 run.run()
 tilt_report.report(run, table.out, params.TILTING_TABLE_RESULTS[table.arrangement], table.arrangement)
