@@ -11,15 +11,25 @@
 namespace yade {
 namespace toppling {
 
+	// Two discs' contact in the plane, as DiscInteractionLoop::updateDiscPair forms it in space.
+	struct PlaneContact {
+		Vector2r normal, point, relativeVelocity; // body 1 to body 2; body 2's point's velocity relative to body 1's
+		Real     overlap;
+		Real     z; // the plane's
+	};
+
 	struct DiscBond {
 		// carried from step to step
-		Real nx0, ny0;                // ParallelBondPhys.normalBefore
-		Real fcn, fcsx, fcsy;         // contactNormalForce, contactShearForce
-		Real fbn, fbsx, fbsy, moment; // bondNormalForce, bondShearForce, bondMoment
-		int  state;                   // bondState
-		bool slipping;                // isSlipping
-		Real fnx, fny, fsx, fsy;      // normalForce, shearForce
-		Real sigmaMax, tauMax;        // bondSigmaMax, bondTauMax
+		Vector2r normalBefore;            // ParallelBondPhys.normalBefore
+		Real     fcn;                     // contactNormalForce
+		Vector2r fcs;                     // contactShearForce
+		Real     fbn;                     // bondNormalForce
+		Vector2r fbs;                     // bondShearForce
+		Real     moment;                  // bondMoment
+		int      state;                   // bondState
+		bool     slipping;                // isSlipping
+		Vector2r normalForce, shearForce; // the total force on body 2
+		Real     sigmaMax, tauMax;        // bondSigmaMax, bondTauMax
 		// constants (a change from Python is taken in when the array is built again)
 		Real              kn, ks, tanPhi, contactDamping, bondDamping; // contact
 		Real              knA, ksA, knI, area, inertia, radius, refOverlap, tensileStrength, cohesion, tanPhiBond;
@@ -33,11 +43,10 @@ namespace toppling {
 		{
 			const ParallelBondPhys& p    = *phys;
 			const auto&             geom = static_cast<const ScGeom&>(*I.geom);
-			nx0 = p.normalBefore.x(), ny0 = p.normalBefore.y();
-			fcn = p.contactNormalForce, fcsx = p.contactShearForce.x(), fcsy = p.contactShearForce.y();
-			fbn = p.bondNormalForce, fbsx = p.bondShearForce.x(), fbsy = p.bondShearForce.y(), moment = p.bondMoment;
+			normalBefore = p.normalBefore.head<2>(), fcn = p.contactNormalForce, fcs = p.contactShearForce.head<2>();
+			fbn = p.bondNormalForce, fbs = p.bondShearForce.head<2>(), moment = p.bondMoment;
 			state = p.bondState, slipping = p.isSlipping;
-			fnx = p.normalForce.x(), fny = p.normalForce.y(), fsx = p.shearForce.x(), fsy = p.shearForce.y();
+			normalForce = p.normalForce.head<2>(), shearForce = p.shearForce.head<2>();
 			sigmaMax = p.bondSigmaMax, tauMax = p.bondTauMax;
 			kn = p.contactKn, ks = p.contactKs, tanPhi = p.tangensOfFrictionAngle, contactDamping = p.contactDamping;
 			bondDamping = p.bondDamping;
@@ -50,14 +59,15 @@ namespace toppling {
 		void store() const
 		{
 			ParallelBondPhys& p  = *phys;
-			p.normalBefore       = Vector3r(nx0, ny0, 0);
-			p.contactNormalForce = fcn, p.contactShearForce = Vector3r(fcsx, fcsy, 0);
-			p.bondNormalForce = fbn, p.bondShearForce = Vector3r(fbsx, fbsy, 0), p.bondMoment = moment;
+			p.normalBefore       = inSpace(normalBefore);
+			p.contactNormalForce = fcn, p.contactShearForce = inSpace(fcs);
+			p.bondNormalForce = fbn, p.bondShearForce = inSpace(fbs), p.bondMoment = moment;
 			p.bondState = state, p.isSlipping = slipping;
-			p.normalForce = Vector3r(fnx, fny, 0), p.shearForce = Vector3r(fsx, fsy, 0);
+			p.normalForce = inSpace(normalForce), p.shearForce = inSpace(shearForce);
 			p.bondSigmaMax = sigmaMax, p.bondTauMax = tauMax;
 		}
-		bool isBonded() const { return state == ParallelBondPhys::intact; }
+		static Vector3r inSpace(const Vector2r& v) { return Vector3r(v.x(), v.y(), 0); }
+		bool            isBonded() const { return state == ParallelBondPhys::intact; }
 	};
 
 } // namespace toppling

@@ -23,15 +23,9 @@ void BreakingLaw::recordBreak(const Interaction& I, const Vector3r& where, const
 }
 
 void BreakingLaw::applyForces(
-        const Interaction& I,
-        const Vector3r&    pos1,
-        const Vector3r&    pos2,
-        const Vector3r&    contactPoint,
-        const Vector3r&    normalForce,
-        const Vector3r&    shearForce,
-        Real               couple)
+        const Interaction& I, const Vector3r& pos1, const Vector3r& pos2, const Vector3r& contactPoint, const NormShearPhys& phys, Real couple)
 {
-	const Vector3r f = -normalForce - shearForce; // on body 1
+	const Vector3r f = -phys.normalForce - phys.shearForce; // on body 1
 	if (!f.allFinite() || !math::isfinite(couple)) {
 		reportInstability(I);
 		return;

@@ -15,16 +15,10 @@ public:
 	// Records a break at `where`, across the unit `normal` (the bond's axis), of a bond `size` wide.
 	void recordBreak(const Interaction& I, const Vector3r& where, const Vector3r& normal, Real size, int mode, Real energy);
 	void reportInstability(const Interaction& I);
-	// Applies the force on body 2 (normalForce + shearForce, minus it on body 1) at the
+	// Applies the physics' force on body 2 (normalForce + shearForce, minus it on body 1) at the
 	// contact point and a couple about z on body 2; a non-finite force stops the run instead.
-	void applyForces(
-	        const Interaction& I,
-	        const Vector3r&    pos1,
-	        const Vector3r&    pos2,
-	        const Vector3r&    contactPoint,
-	        const Vector3r&    normalForce,
-	        const Vector3r&    shearForce,
-	        Real               couple);
+	void
+	applyForces(const Interaction& I, const Vector3r& pos1, const Vector3r& pos2, const Vector3r& contactPoint, const NormShearPhys& phys, Real couple);
 	toppling::ForceSums* sums = nullptr; // set by DiscInteractionLoop during its loop: the forces go there, not to O.forces
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS(BreakingLaw, LawFunctor,

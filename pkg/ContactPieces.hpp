@@ -60,15 +60,16 @@ namespace toppling {
 	// A stable explicit DEM step moves contacting bodies by a small fraction of their size; a
 	// relative displacement of a tenth of the smaller radius in one step means the time step is
 	// far too large (the run is blowing up). Non-positive radii (walls) are ignored.
-	inline bool stepIsSmall(const Vector3r& relativeVelocity, Real dt, Real r1, Real r2)
+	template <class Vector> inline bool stepIsSmall(const Vector& relativeVelocity, Real dt, Real r1, Real r2)
 	{
 		const Real r  = smallerRadius(r1, r2);
 		const Real d2 = relativeVelocity.squaredNorm() * dt * dt;
 		return math::isfinite(d2) && (r <= 0 || d2 < 0.01 * r * r);
 	}
 
-	// Coulomb slider: scales the shear force back onto |Fs| <= limit; true while slipping.
-	inline bool coulombSlip(Vector3r& shearForce, Real limit)
+	// Coulomb slider: scales the shear force back onto |Fs| <= limit; true while slipping. (In the
+	// plane a Vector2r gives the same doubles as a Vector3r with z = 0.)
+	template <class Vector> inline bool coulombSlip(Vector& shearForce, Real limit)
 	{
 		const Real fs = shearForce.norm();
 		if (fs <= limit) return false;

@@ -33,7 +33,8 @@ public:
 		"thread: bit for bit). Such pairs' :yref:`ScGeom.shearInc` is not updated (the parallel-bond and smooth-joint "
 		"laws form their own shear increment and frame turn). Periodic scenes, callbacks and sorted loops run as in "
 		"InteractionLoop. Constructed as InteractionLoop, from three lists of functors.\n\n"
-		"Within :yref:`runSteps<DiscInteractionLoop.runSteps>` the parallel bonds' state is kept in an array and "
+		"Within :yref:`runSteps<DiscInteractionLoop.runSteps>` the state of the parallel bonds between discs in the "
+		"xy-plane is kept in an array (the law runs on its plane components, to the same results) and "
 		"copied back to the interactions' physics and geometry at its end, before any other engine that reads "
 		"interactions runs (a :yref:`PeriodicEngine` when it is due, a :yref:`TimeStepper` at its update); "
 		"an engine this loop does not know of makes it use the objects at every step.",
@@ -53,7 +54,7 @@ private:
 		int        bond;                      // index in `bonds`; -1: the interaction is handled through its objects
 		Body::id_t id1, id2;
 	};
-	std::vector<toppling::Kinematics> motion; // by body id, gathered at the start of each step
+	std::vector<toppling::Kinematics> motion; // by body id: gathered at the start of a step, or DiscNewtonIntegrator's
 	std::vector<Real>                 radius; // by body id; 0: not a sphere
 	toppling::ForceSums               sums;   // what the laws add during the loop
 	std::vector<Slot>                 slots;

@@ -28,8 +28,17 @@ bool DiscNewtonIntegrator::covers(const DiscInteractionLoop& loop)
 	if (!callbacks.empty()) return false;
 #endif
 	if (scene->isPeriodic || scene->trackEnergy || mask > 0 || densityScaling || !dampGravity) return false;
-	if (builtWith == loop.builds) return true;
-	builtWith = -1;
+	if (builtWith != loop.builds) {
+		coversBodies = takeConstants();
+		builtWith    = loop.builds;
+	}
+	return coversBodies;
+}
+
+// Every body's constants; false if a body is one NewtonIntegrator treats otherwise (a clump, a
+// body it turns as aspherical).
+bool DiscNewtonIntegrator::takeConstants()
+{
 	bodies.assign(scene->bodies->size(), Constants());
 	for (const auto& b : *scene->bodies) {
 		if (!b) continue;
@@ -47,7 +56,6 @@ bool DiscNewtonIntegrator::covers(const DiscInteractionLoop& loop)
 		c.bounded = bool(b->bound);
 		if (c.bounded) c.refPos = b->bound->refPos, c.sweepLength = b->bound->sweepLength;
 	}
-	builtWith = loop.builds;
 	return true;
 }
 

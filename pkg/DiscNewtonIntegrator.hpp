@@ -37,8 +37,10 @@ private:
 		bool     planar = false; // turns about z only: its orientation can wait (DiscInteractionLoop::turn)
 	};
 	std::vector<Constants> bodies;
-	long                   builtWith = -1; // the loop's build this array was made with
+	long                   builtWith    = -1;    // the loop's build this array was made with
+	bool                   coversBodies = false; // every body is one integrate() covers
 	bool                   covers(const DiscInteractionLoop& loop);
+	bool                   takeConstants();
 	void                   integrate(DiscInteractionLoop& loop);
 	Vector3r               linearAcceleration(const Vector3r& f, const Constants& c, const Vector3r& vel) const;
 	Vector3r               angularAcceleration(const Vector3r& m, const Constants& c, const Vector3r& angVel) const;

@@ -58,7 +58,7 @@ bool Law2_ScGeom_ParallelBondPhys_ParallelBond::interact(
 
 	phys.normalForce = (phys.contactNormalForce + phys.bondNormalForce + dampingFn) * n;
 	phys.shearForce  = phys.contactShearForce + phys.bondShearForce;
-	applyForces(I, b1.pos, b2.pos, geom.contactPoint, phys.normalForce, phys.shearForce, phys.bondMoment);
+	applyForces(I, b1.pos, b2.pos, geom.contactPoint, phys, phys.bondMoment);
 	return true;
 }
 
@@ -86,92 +86,98 @@ bool Law2_ScGeom_ParallelBondPhys_ParallelBond::updateBond(
 	return false;
 }
 
+namespace {
+	// (w z) x r, in the plane: the z and zero terms of the cross product in space left out.
+	Vector2r spinCross(Real w, const Vector2r& r) { return Vector2r(-(w * r.y()), w * r.x()); }
+
+	toppling::PlaneContact planeContact(const toppling::Kinematics& k1, const toppling::Kinematics& k2, Real r1, Real r2)
+	{
+		const Vector2r p1 = k1.pos.head<2>(), p2 = k2.pos.head<2>();
+		Vector2r       n    = (p2 + Vector2r::Zero()) - p1;
+		const Real     norm = n.norm();
+		n /= norm;
+		const Real     overlap = r1 + r2 - norm;
+		const Vector2r point   = p1 + (r1 - 0.5 * overlap) * n;
+		const Vector2r v       = (k2.vel.head<2>() + spinCross(k2.angVel.z(), point - p2)) - (k1.vel.head<2>() + spinCross(k1.angVel.z(), point - p1));
+		return { n, point, v, overlap, k1.pos.z() };
+	}
+
+	// toppling::FrameTurn in the plane: a shear force turned by the tilt nBefore x n about z.
+	void turn(Vector2r& shear, Real tilt)
+	{
+		const Real x = shear.x() - shear.y() * tilt;
+		shear.y()    = shear.y() + shear.x() * tilt;
+		shear.x()    = x;
+	}
+} // namespace
+
 // interact() for two discs in the xy-plane, on their plane components: the same operations in
 // the same order on every component that is not zero in the plane (the frame's twist, n.(w1+w2)
-// n, is zero there), so the same results to the last bit. The geometry is formed here, as
-// DiscInteractionLoop::updateDiscPair forms it.
+// n, is zero there), so the same results to the last bit.
 bool Law2_ScGeom_ParallelBondPhys_ParallelBond::interact(
         toppling::DiscBond& b, Body::id_t id1, Body::id_t id2, const toppling::Kinematics& k1, const toppling::Kinematics& k2, Real r1, Real r2)
 {
-	const Real dx = (k2.pos.x() + Real(0)) - k1.pos.x(), dy = (k2.pos.y() + Real(0)) - k1.pos.y();
-	const Real norm = math::sqrt(dx * dx + dy * dy);
-	const Real nx = dx / norm, ny = dy / norm;
-	const Real un = r1 + r2 - norm;
-	if (!b.isBonded() && un < 0) return false;
-	const Real cx = k1.pos.x() + (r1 - 0.5 * un) * nx, cy = k1.pos.y() + (r1 - 0.5 * un) * ny; // contact point
-	const Real w1 = k1.angVel.z(), w2 = k2.angVel.z();
-	const Real vx = (k2.vel.x() - w2 * (cy - k2.pos.y())) - (k1.vel.x() - w1 * (cy - k1.pos.y()));
-	const Real vy = (k2.vel.y() + w2 * (cx - k2.pos.x())) - (k1.vel.y() + w1 * (cx - k1.pos.x()));
+	const toppling::PlaneContact c = planeContact(k1, k2, r1, r2);
+	if (!b.isBonded() && c.overlap < 0) return false;
 	const Real dt = scene->dt;
-	{
-		const Real r  = toppling::smallerRadius(b.refR1, b.refR2);
-		const Real d2 = (vx * vx + vy * vy) * dt * dt;
-		if (!(math::isfinite(d2) && (r <= 0 || d2 < 0.01 * r * r))) {
-			reportInstability(*b.interaction);
-			return true;
-		}
-	}
-	const Real ux = vx * dt, uy = vy * dt, along = ux * nx + uy * ny;
-	const Real dux = ux - along * nx, duy = uy - along * ny;
-	const Real tilt = b.nx0 * ny - b.ny0 * nx; // the frame's turn about z since the last step
-	b.nx0 = nx, b.ny0 = ny;
-	const auto turn = [tilt](Real& sx, Real& sy) {
-		const Real x = sx - sy * tilt;
-		sy           = sy + sx * tilt;
-		sx           = x;
-	};
-
-	if (un > 0) {
-		turn(b.fcsx, b.fcsy);
-		b.fcn = b.kn * un;
-		b.fcsx -= b.ks * dux, b.fcsy -= b.ks * duy;
-		const Real limit = b.fcn * b.tanPhi, fs = math::sqrt(b.fcsx * b.fcsx + b.fcsy * b.fcsy);
-		b.slipping = !(fs <= limit); // as coulombSlip (a NaN force slips)
-		if (b.slipping) {
-			const Real scale = fs > 0 ? limit / fs : 0;
-			b.fcsx *= scale, b.fcsy *= scale;
-		}
-	} else {
-		b.fcn = b.fcsx = b.fcsy = 0;
-		b.slipping              = false;
-	}
-
-	if (b.isBonded()) {
-		turn(b.fbsx, b.fbsy);
-		b.fbn = b.knA * (un - b.refOverlap);
-		b.fbsx -= b.ksA * dux, b.fbsy -= b.ksA * duy;
-		b.moment -= b.knI * ((w2 - w1) * dt);
-		const Real sigma = b.fbn / b.area; // compression positive
-		b.sigmaMax       = -sigma + math::abs(b.moment) * b.radius / b.inertia;
-		b.tauMax         = math::sqrt(b.fbsx * b.fbsx + b.fbsy * b.fbsy) / b.area;
-		int mode         = ParallelBondPhys::intact;
-		if (b.sigmaMax >= b.tensileStrength) mode = ParallelBondPhys::brokenTension;
-		else if (b.tauMax >= b.cohesion + sigma * b.tanPhiBond)
-			mode = ParallelBondPhys::brokenShear;
-		if (mode != ParallelBondPhys::intact) {
-			b.store();
-			recordBreak(*b.interaction, Vector3r(cx, cy, k1.pos.z()), Vector3r(nx, ny, 0), 2 * b.radius, mode, b.phys->bondEnergy());
-			b.phys->setBondState(mode);
-			b.state = mode;
-			b.fbn = b.fbsx = b.fbsy = b.moment = 0;
-			if (un < 0) return false;
-		}
-	}
-
-	const Real c         = (un > 0 ? b.contactDamping : 0) + (b.isBonded() ? b.bondDamping : 0);
-	const Real dampingFn = c > 0 ? -c * (vx * nx + vy * ny) : 0;
-	const Real fn        = b.fcn + b.fbn + dampingFn;
-	b.fnx = fn * nx, b.fny = fn * ny;
-	b.fsx = b.fcsx + b.fbsx, b.fsy = b.fcsy + b.fbsy;
-	const Real fx = -b.fnx - b.fsx, fy = -b.fny - b.fsy; // on body 1
-	if (!(math::isfinite(fx) && math::isfinite(fy) && math::isfinite(b.moment))) {
+	if (!toppling::stepIsSmall(c.relativeVelocity, dt, b.refR1, b.refR2)) {
 		reportInstability(*b.interaction);
 		return true;
 	}
-	const Real t1 = ((cx - k1.pos.x()) * fy - (cy - k1.pos.y()) * fx) - b.moment;
-	const Real t2 = -((cx - k2.pos.x()) * fy - (cy - k2.pos.y()) * fx) + b.moment;
-	sums->addPair(id1, id2, Vector3r(fx, fy, 0), Vector3r(0, 0, t1), Vector3r(0, 0, t2));
+	const Vector2r u    = c.relativeVelocity * dt;
+	const Vector2r du   = u - u.dot(c.normal) * c.normal;
+	const Real     tilt = b.normalBefore.x() * c.normal.y() - b.normalBefore.y() * c.normal.x();
+	b.normalBefore      = c.normal;
+
+	if (c.overlap > 0) {
+		turn(b.fcs, tilt);
+		b.fcn = b.kn * c.overlap;
+		b.fcs -= b.ks * du;
+		b.slipping = toppling::coulombSlip(b.fcs, b.fcn * b.tanPhi);
+	} else {
+		b.fcn = 0, b.fcs = Vector2r::Zero(), b.slipping = false;
+	}
+	if (b.isBonded()) {
+		turn(b.fbs, tilt);
+		if (!updateBond(b, c, du, (k2.angVel.z() - k1.angVel.z()) * dt) && c.overlap < 0) return false;
+	}
+
+	const Real c0        = (c.overlap > 0 ? b.contactDamping : 0) + (b.isBonded() ? b.bondDamping : 0);
+	const Real dampingFn = c0 > 0 ? -c0 * c.relativeVelocity.dot(c.normal) : 0;
+	b.normalForce        = (b.fcn + b.fbn + dampingFn) * c.normal;
+	b.shearForce         = b.fcs + b.fbs;
+	const Vector2r f     = -b.normalForce - b.shearForce; // on body 1
+	if (!f.allFinite() || !math::isfinite(b.moment)) {
+		reportInstability(*b.interaction);
+		return true;
+	}
+	const Vector2r r1p = c.point - k1.pos.head<2>(), r2p = c.point - k2.pos.head<2>();
+	const Real     t1 = (r1p.x() * f.y() - r1p.y() * f.x()) - b.moment;
+	const Real     t2 = -(r2p.x() * f.y() - r2p.y() * f.x()) + b.moment;
+	sums->addPair(id1, id2, Vector3r(f.x(), f.y(), 0), Vector3r(0, 0, t1), Vector3r(0, 0, t2));
 	return true;
+}
+
+// updateBond() on a bond in the disc path's array, its shear force turned already.
+bool Law2_ScGeom_ParallelBondPhys_ParallelBond::updateBond(toppling::DiscBond& b, const toppling::PlaneContact& c, const Vector2r& du, Real spin)
+{
+	b.fbn = b.knA * (c.overlap - b.refOverlap);
+	b.fbs -= b.ksA * du;
+	b.moment -= b.knI * spin;
+	const Real sigma = b.fbn / b.area; // compression positive
+	b.sigmaMax       = -sigma + math::abs(b.moment) * b.radius / b.inertia;
+	b.tauMax         = b.fbs.norm() / b.area;
+	int mode         = ParallelBondPhys::intact;
+	if (b.sigmaMax >= b.tensileStrength) mode = ParallelBondPhys::brokenTension;
+	else if (b.tauMax >= b.cohesion + sigma * b.tanPhiBond)
+		mode = ParallelBondPhys::brokenShear;
+	if (mode == ParallelBondPhys::intact) return true;
+
+	b.store(); // the break's energy, and the rock's rotation (toppling::meanBondTurn), read the object
+	recordBreak(*b.interaction, Vector3r(c.point.x(), c.point.y(), c.z), toppling::DiscBond::inSpace(c.normal), 2 * b.radius, mode, b.phys->bondEnergy());
+	b.phys->setBondState(mode);
+	b.state = mode, b.fbn = 0, b.fbs = Vector2r::Zero(), b.moment = 0;
+	return false;
 }
 
 Real Law2_ScGeom_ParallelBondPhys_ParallelBond::elasticEnergy() const

@@ -121,7 +121,7 @@ bool Law2_ScGeom_SmoothJointPhys_SmoothJoint::interact(
 	phys.jointShearForce  = fs;
 	phys.normalForce      = fn * n;
 	phys.shearForce       = fs * t;
-	applyForces(I, b1.pos, b2.pos, geom.contactPoint, phys.normalForce, phys.shearForce, 0);
+	applyForces(I, b1.pos, b2.pos, geom.contactPoint, phys, 0);
 	return true;
 }
 

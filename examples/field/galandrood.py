@@ -25,7 +25,7 @@ from yade.params import table  # noqa: E402  (filled by readParamsFromTable)
 
 criteria = tilting.StageCriteria(table.chunk, table.rest_speed, table.fail_displacement, table.max_stage_time,
                                  table.fail_columns)  # each checks its parameters before anything is built
-joint = tilting_table.JointMaterial(table.joint_kn, params.TABLE_5_15["friction"], table.joint_ks)
+joint = tilting_table.JointMaterial(table.joint_kn, table.joint_friction, table.joint_ks)
 slope = equivalent_slope.EquivalentSlope(
     shape=equivalent_slope.SlopeShape(**{**params.GALANDROOD_SHAPE, "columns": table.columns}), rock=params.TABLE_5_14,
     main=joint, base=joint, base_joints=[], joints_into_foundation=True, joint_gap=table.joint_gap, bond_gap=table.bond_gap,
