@@ -5,10 +5,13 @@ Builds one bonded 2D packing (triangular lattice of ~20 000 discs with radii jit
 up to 10 %, bottom row fixed, gravity) and times, in the same YADE process and on the same
 discs, the step with each: µs per step and ns per interaction-step. Run it through the
 launcher; it re-runs itself with 1 and 2 threads, prints a Markdown table and, last, one JSON
-line {"fast_1": ns, "fast_2": ns, "generic_1": ns, ...} (ns per interaction-step):
+line {"fast_1": ns, "fast_2": ns, "generic_1": ns, ...} (ns per interaction-step). Before it, the
+second core's other use: two one-thread runs of the disc path side by side, their steps per second
+summed, against one run on two threads:
 
-    ./yade -x -n benchmarks/laws.py            # all thread counts
-    ./yade -x -n -j2 benchmarks/laws.py worker # one thread count, JSON on stdout
+    ./yade -x -n benchmarks/laws.py                 # all thread counts
+    ./yade -x -n -j2 benchmarks/laws.py worker      # one thread count, JSON on stdout
+    BENCH_LAWS=fast ./yade -x -n -j1 benchmarks/laws.py worker   # one law
 """
 import json
 import math
@@ -31,7 +34,7 @@ def lattice(seed=1):
             yield (2 * R * i + (R if j % 2 else 0), math.sqrt(3) * R * j, R * rng.uniform(0.9, 1.0) + 1e-9 * R, j == 0)
 
 
-LAWS = ("fast", "generic", "JCFpm", "CundallStrack")  # fast, generic: the parallel-bond law on each loop
+LAWS = tuple(os.environ.get("BENCH_LAWS", "fast generic JCFpm CundallStrack").split())  # fast, generic: the parallel-bond law on each path
 
 
 def build(law_name):
@@ -95,25 +98,39 @@ def worker():
     print("BENCHMARK-JSON " + json.dumps(rows))
 
 
-def main():
+def run_workers(threads: int, copies: int = 1, laws: str = " ".join(LAWS)) -> list:
+    """The rows of ``copies`` worker processes of ``threads`` threads each, run side by side."""
     repo = os.environ["TOPPLING_REPO"]  # set by the ./yade launcher
+    command = [os.path.join(repo, "yade"), "-x", "-n", "-j", str(threads), os.path.join(repo, "benchmarks", "laws.py"), "worker"]
+    procs = [subprocess.Popen(command, stdout=subprocess.PIPE, text=True, env=dict(os.environ, BENCH_LAWS=laws))
+             for _ in range(copies)]
     rows = []
-    for threads in (1, 2):
-        proc = subprocess.run([os.path.join(repo, "yade"), "-x", "-n", "-j", str(threads),
-                               os.path.join(repo, "benchmarks", "laws.py"), "worker"],
-                              capture_output=True, text=True, check=True)
-        line = next(l for l in proc.stdout.splitlines() if l.startswith("BENCHMARK-JSON "))
-        rows += [dict(r, threads=threads) for r in json.loads(line[len("BENCHMARK-JSON "):])]
-    out = os.path.join(repo, "results", "benchmark_laws")
+    for proc in procs:
+        out, _ = proc.communicate()
+        if proc.returncode:
+            raise RuntimeError(f"{' '.join(command)} failed ({proc.returncode})")
+        line = next(l for l in out.splitlines() if l.startswith("BENCHMARK-JSON "))
+        rows.append([dict(r, threads=threads) for r in json.loads(line[len("BENCHMARK-JSON "):])])
+    return rows
+
+
+def main():
+    rows = run_workers(1)[0] + run_workers(2)[0]
+    side_by_side = [r[0] for r in run_workers(1, copies=2, laws="fast")]
+    out = os.path.join(os.environ["TOPPLING_REPO"], "results", "benchmark_laws")
     os.makedirs(out, exist_ok=True)
     with open(os.path.join(out, "summary.json"), "w") as f:
-        json.dump(rows, f, indent=2)
+        json.dump(rows + side_by_side, f, indent=2)
     print("| law | threads | discs | interactions | µs/step | ns/interaction-step | vs JCFpm |")
     print("|---|---|---|---|---|---|---|")
     for r in rows:
         jcfpm = next(x for x in rows if x["law"] == "JCFpm" and x["threads"] == r["threads"])
         print(f"| {r['law']} | {r['threads']} | {r['discs']} | {r['interactions']} | {r['us_per_step']:.0f} | "
               f"{r['ns_per_interaction_step']:.0f} | {r['ns_per_interaction_step'] / jcfpm['ns_per_interaction_step']:.2f} |")
+    two_threads = next(r for r in rows if r["law"] == "fast" and r["threads"] == 2)
+    each = [1e6 / r["us_per_step"] for r in side_by_side]
+    print(f"disc path, the second core: one run on 2 threads {1e6 / two_threads['us_per_step']:.0f} steps/s; two 1-thread "
+          f"runs side by side {sum(each):.0f} steps/s summed ({' + '.join(f'{x:.0f}' for x in each)})")
     print(json.dumps({f"{r['law'].lower()}_{r['threads']}": round(r["ns_per_interaction_step"], 1) for r in rows
                       if r["law"] != "CundallStrack"}))
 

@@ -102,6 +102,21 @@ namespace {
 		return { n, point, v, overlap, k1.pos.z() };
 	}
 
+	// updateBond()'s forces, stresses and failure test on a bond of the disc path's array, its shear
+	// force turned already: the mode it breaks in, or intact.
+	int advanceBond(toppling::DiscBond& b, const toppling::PlaneContact& c, const Vector2r& du, Real spin)
+	{
+		b.fbn = b.knA * (c.overlap - b.refOverlap);
+		b.fbs -= b.ksA * du;
+		b.moment -= b.knI * spin;
+		const Real sigma = b.fbn / b.area; // compression positive
+		b.sigmaMax       = -sigma + math::abs(b.moment) * b.radius / b.inertia;
+		b.tauMax         = b.fbs.norm() / b.area;
+		if (b.sigmaMax >= b.tensileStrength) return ParallelBondPhys::brokenTension;
+		if (b.tauMax >= b.cohesion + sigma * b.tanPhiBond) return ParallelBondPhys::brokenShear;
+		return ParallelBondPhys::intact;
+	}
+
 	// toppling::FrameTurn in the plane: a shear force turned by the tilt nBefore x n about z.
 	void turn(Vector2r& shear, Real tilt)
 	{
@@ -139,7 +154,11 @@ bool Law2_ScGeom_ParallelBondPhys_ParallelBond::interact(
 	}
 	if (b.isBonded()) {
 		turn(b.fbs, tilt);
-		if (!updateBond(b, c, du, (k2.angVel.z() - k1.angVel.z()) * dt) && c.overlap < 0) return false;
+		const int mode = advanceBond(b, c, du, (k2.angVel.z() - k1.angVel.z()) * dt);
+		if (mode != ParallelBondPhys::intact) {
+			breakBond(b, c, mode);
+			if (c.overlap < 0) return false;
+		}
 	}
 
 	const Real c0        = (c.overlap > 0 ? b.contactDamping : 0) + (b.isBonded() ? b.bondDamping : 0);
@@ -158,26 +177,14 @@ bool Law2_ScGeom_ParallelBondPhys_ParallelBond::interact(
 	return true;
 }
 
-// updateBond() on a bond in the disc path's array, its shear force turned already.
-bool Law2_ScGeom_ParallelBondPhys_ParallelBond::updateBond(toppling::DiscBond& b, const toppling::PlaneContact& c, const Vector2r& du, Real spin)
+// A bond of the disc path's array broke: recorded, and its physics object told (the break's energy
+// and the rock's rotation, toppling::meanBondTurn, read the object).
+void Law2_ScGeom_ParallelBondPhys_ParallelBond::breakBond(toppling::DiscBond& b, const toppling::PlaneContact& c, int mode)
 {
-	b.fbn = b.knA * (c.overlap - b.refOverlap);
-	b.fbs -= b.ksA * du;
-	b.moment -= b.knI * spin;
-	const Real sigma = b.fbn / b.area; // compression positive
-	b.sigmaMax       = -sigma + math::abs(b.moment) * b.radius / b.inertia;
-	b.tauMax         = b.fbs.norm() / b.area;
-	int mode         = ParallelBondPhys::intact;
-	if (b.sigmaMax >= b.tensileStrength) mode = ParallelBondPhys::brokenTension;
-	else if (b.tauMax >= b.cohesion + sigma * b.tanPhiBond)
-		mode = ParallelBondPhys::brokenShear;
-	if (mode == ParallelBondPhys::intact) return true;
-
-	b.store(); // the break's energy, and the rock's rotation (toppling::meanBondTurn), read the object
+	b.store();
 	recordBreak(*b.interaction, Vector3r(c.point.x(), c.point.y(), c.z), toppling::DiscBond::inSpace(c.normal), 2 * b.radius, mode, b.phys->bondEnergy());
 	b.phys->setBondState(mode);
 	b.state = mode, b.fbn = 0, b.fbs = Vector2r::Zero(), b.moment = 0;
-	return false;
 }
 
 Real Law2_ScGeom_ParallelBondPhys_ParallelBond::elasticEnergy() const

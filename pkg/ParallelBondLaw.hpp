@@ -53,7 +53,7 @@ private:
 	        const toppling::FrameTurn& frame,
 	        const Vector3r&            shearIncrement,
 	        Real                       relativeSpin);
-	bool updateBond(toppling::DiscBond& bond, const toppling::PlaneContact& contact, const Vector2r& shearIncrement, Real relativeSpin);
+	void breakBond(toppling::DiscBond& bond, const toppling::PlaneContact& contact, int mode);
 };
 REGISTER_SERIALIZABLE(Law2_ScGeom_ParallelBondPhys_ParallelBond);
 
