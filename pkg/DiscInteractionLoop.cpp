@@ -179,9 +179,8 @@ void DiscInteractionLoop::runSteps(long steps)
 DiscInteractionLoop::Reader DiscInteractionLoop::readerBeforeNextLoop() const
 {
 	if (!inRunSteps || scene->subStepping || scene->iter + 1 >= scene->stopAtIter) return Reader::any;
-	const long next   = scene->iter + 1;
-	Reader     reader = Reader::none;
-	bool       after  = false; // the engines after this one run in this step, the others in the next
+	Reader reader = Reader::none;
+	bool   after  = false; // the engines after this one run in this step, the others in the next
 	for (const auto& e : scene->engines) {
 		if (e.get() == this) {
 			after = true;
@@ -190,22 +189,29 @@ DiscInteractionLoop::Reader DiscInteractionLoop::readerBeforeNextLoop() const
 		if (e->dead || dynamic_cast<const ForceResetter*>(e.get()) || dynamic_cast<const InsertionSortCollider*>(e.get())
 		    || dynamic_cast<const NewtonIntegrator*>(e.get()))
 			continue;
-		if (const auto* stepper = dynamic_cast<const TimeStepper*>(e.get())) {
-			if (stepper->active && (after ? scene->iter : next) % stepper->timeStepUpdateInterval == 0) reader = Reader::timeStepper;
+		if (auto* stepper = dynamic_cast<TimeStepper*>(e.get())) {
+			// after this loop: its own test, which changes nothing (a GlobalStiffnessTimeStepper also
+			// runs at the first step after a load); before the next loop: at every step, to be safe
+			stepper->scene = scene;
+			if (!after || stepper->isActivated()) reader = Reader::timeStepper;
 			continue;
 		}
 		const auto* periodic = dynamic_cast<const PeriodicEngine*>(e.get());
-		if (!periodic) return Reader::any;
-		// due at the next step at the latest (a little early for a wall-clock period: it is read later)
-		const PeriodicEngine& p = *periodic;
-		if (p.nDo >= 0 && p.nDone >= p.nDo) continue;
-		if ((p.firstIterRun > 0 && p.nDone == 0) ? p.firstIterRun <= next
-		                                         : (p.iterPeriod > 0 && next - p.iterLast >= p.iterPeriod)
-		                    || (p.virtPeriod > 0 && scene->time + scene->dt - p.virtLast >= p.virtPeriod)
-		                    || (p.realPeriod > 0 && PeriodicEngine::getClock() + 0.1 - p.realLast >= p.realPeriod))
-			return Reader::any;
+		if (!periodic || due(*periodic)) return Reader::any;
 	}
 	return reader;
+}
+
+// Whether a periodic engine may run before this loop's next step (a wall-clock period a little
+// early: it is read later than here); PeriodicEngine::isActivated's test, which cannot be called:
+// it counts the runs.
+bool DiscInteractionLoop::due(const PeriodicEngine& p) const
+{
+	const long next = scene->iter + 1;
+	if (p.nDo >= 0 && p.nDone >= p.nDo) return false;
+	if (p.firstIterRun > 0 && p.nDone == 0) return p.firstIterRun <= next;
+	return (p.iterPeriod > 0 && next - p.iterLast >= p.iterPeriod) || (p.virtPeriod > 0 && scene->time + scene->dt - p.virtLast >= p.virtPeriod)
+	        || (p.realPeriod > 0 && PeriodicEngine::getClock() + 0.1 - p.realLast >= p.realPeriod) || (p.nDone == 0 && p.initRun);
 }
 
 // How often the scene's InsertionSortCollider has run (-1: none): when it runs it inserts and

@@ -17,6 +17,7 @@
 #include "BondArrays.hpp"
 #include "ContactPieces.hpp"
 #include <core/InteractionLoop.hpp>
+#include <pkg/common/PeriodicEngines.hpp>
 #include <pkg/dem/Ig2_Sphere_Sphere_ScGeom.hpp>
 #include <pkg/dem/ScGeom.hpp>
 
@@ -75,6 +76,7 @@ private:
 	void                              updateDiscPair(ScGeom& geom, Body::id_t id1, Body::id_t id2) const;
 	bool                              apart(Body::id_t id1, Body::id_t id2, Real detection) const;
 	Reader                            readerBeforeNextLoop() const;
+	bool                              due(const PeriodicEngine& engine) const;
 	long                              colliderActions() const;
 	bool                              arraysValid() const;
 	void                              build(const IGeomFunctor* discs, const LawFunctor* bondLaw);

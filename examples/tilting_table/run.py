@@ -24,6 +24,7 @@ criteria = tilting.StageCriteria(table.chunk, table.rest_speed, table.fail_displ
                                  table.fail_columns)
 slope = tilting_table.from_params(table, params)
 run = tilting_table.start(slope, protocol, criteria, output.table_inputs(table), table.out, table.resume)
-engines.set_fast(bool(table.disc_path))
+if not table.disc_path:
+    engines.set_fast(False)
 run.run()
 tilt_report.report(run, table.out, params.TILTING_TABLE_RESULTS[table.arrangement], table.arrangement)

@@ -102,7 +102,10 @@ def set_fast(fast: bool) -> None:
     engines[loops[0]] = (DiscInteractionLoop if fast else InteractionLoop)(*functors)
     for k, e in enumerate(engines):
         if isinstance(e, NewtonIntegrator):
-            engines[k] = (DiscNewtonIntegrator if fast else NewtonIntegrator)(**e.dict())
+            engines[k] = newton = (DiscNewtonIntegrator if fast else NewtonIntegrator)(**e.dict())
+            for collider in engines:  # it keeps the integrator it asks for the bodies' largest displacement
+                if isinstance(collider, InsertionSortCollider):
+                    collider.newton = newton
     O.engines = engines
 
 
