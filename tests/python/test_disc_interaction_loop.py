@@ -7,7 +7,8 @@ from types import SimpleNamespace
 import numpy as np
 import pytest
 from yade import O
-from yade.wrapper import DiscInteractionLoop, ParallelBondPhys, PyRunner, SmoothJointPhys
+from yade.wrapper import (DiscInteractionLoop, DiscNewtonIntegrator, InsertionSortCollider, ParallelBondPhys, PyRunner,
+                          SmoothJointPhys)
 
 from examples import params
 from toppling.build import engines
@@ -88,3 +89,14 @@ def test_run_steps_refuses_a_negative_count(empty_scene):
     loop = next(e for e in O.engines if isinstance(e, DiscInteractionLoop))
     with pytest.raises(ValueError, match="steps = -1: give 0 or more"):
         loop.runSteps(-1)
+
+
+def test_switching_paths_leaves_the_collider_asking_the_integrator_that_runs(empty_scene):
+    model = SimpleNamespace(**{**params.TILTING_TABLE_IDEAL, "rmin": 0.003, "rmax": 0.012})
+    tilting_table.from_params(model, params).build()
+    run_steps(10)  # the collider has found its integrator (and a loaded scene keeps it)
+    for fast in (False, True):
+        engines.set_fast(fast)
+        collider = next(e for e in O.engines if isinstance(e, InsertionSortCollider))
+        assert collider.newton is engines.newton()
+        assert isinstance(engines.newton(), DiscNewtonIntegrator) == fast
