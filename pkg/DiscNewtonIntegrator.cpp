@@ -64,9 +64,8 @@ void DiscNewtonIntegrator::integrate(DiscInteractionLoop& loop)
 {
 	scene->forces.sync();
 	const Real dt  = scene->dt;
-	maxVelocitySq  = 0;
 	const long n   = long(bodies.size());
-	Real       max = 0;
+	Real       max = 0; // the bodies' largest displacement, as NewtonIntegrator::maxVelocitySq holds it
 #ifdef YADE_OPENMP
 #pragma omp parallel for reduction(max : max) num_threads(ompThreads > 0 ? std::min(ompThreads, omp_get_max_threads()) : omp_get_max_threads())
 #endif
