@@ -76,7 +76,7 @@ TILTING_TABLE_IDEAL = dict(
     arrangement="ideal", rmin=1e-3, rmax=4e-3, porosity=0.18, seed=1, layout_seed=1,  # m, m, -
     bond_tensile_strength=CALIBRATED_BOND_TENSILE_STRENGTH["ideal"], main_joint_friction=0.0,
     base_joint_friction=0.0, joint_stiffness_scale=0.01, bond_gap=0.0, cut_rules=1, joint_pieces=1, z_order=0,
-    disc_path=1,  # 1: DiscInteractionLoop and DiscNewtonIntegrator; 0: YADE's generic ones (the reference, the same results)
+    disc_path=1,  # 1: DiscInteractionLoop, DiscNewtonIntegrator; 0: YADE's generic engines (the same results)
     timestep_safety=0.8, damping=0.0, settle_damping=0.7,  # local damping while tilting, on the level table
     start_tilt=26.0, step=2.0, max_tilt=45.0, tilt_rate=50.0, stage_rate=10.0,  # deg, deg, deg, deg/s, deg/s
     chunk=0.02, rest_speed=1e-3, fail_displacement=0.05, max_stage_time=2.0, fail_columns=2,  # s, m/s, m, s, -
@@ -126,12 +126,13 @@ GALANDROOD_SHAPE = dict(height=FIG_5_44["height"], joint_dip_deg=FIG_5_44["layer
                         top_deg=FIG_5_44["top_deg"], spacing=FIG_5_44["thickness"], columns=80)
 GALANDROOD = dict(**TABLE_5_14_DISCS, columns=GALANDROOD_SHAPE["columns"], porosity=0.18, seed=1, joint_gap=0.0,
                   joint_kn=TABLE_5_15["kn"], joint_ks=TABLE_5_15["ks"], joint_friction=TABLE_5_15["friction"],
+                  joints_into_foundation=1,
                   reduction_factor=TABLE_5_16_FACTOR,
                   timestep_safety=0.8, damping=0.0, settle_damping=0.7,
                   chunk=0.05, rest_speed=1e-3, fail_displacement=0.5, max_stage_time=2.0, fail_columns=2,
                   post_failure_time=0.2, resume=-1, checkpoint_every=600.0, max_wall_time=0.0, exact_resume=0)
 # m, m, m (Table 5-14), -, -, -; joint_gap [m]: 0, Table 5-15's 1 cm read as the distance within which discs across a joint are paired (our bond
-# gap, 6 cm, pairs them), not as an aperture; joint_kn, joint_ks [N/m3], joint_friction [-]; s, m/s, m, s, -, s, -, wall s x2
+# gap, 6 cm, pairs them), not as an aperture; joint_kn, joint_ks [N/m3], joint_friction [-]; joints_into_foundation 1: the layers cut down to the held base, 0: rooted on the plane through the toe; s, m/s, m, s, -, s, -, wall s x2
 
 # ---- §5.4.1: Ihlara Valley (Tables 5-12, 5-13; Figs 5-33 ... 5-37) ----
 _IHLARA_COMMON = dict(normalDamping=0.25, bondNormalDamping=0.2, thickness=1.0)  # per metre of valley

@@ -28,7 +28,8 @@ criteria = tilting.StageCriteria(table.chunk, table.rest_speed, table.fail_displ
 joint = tilting_table.JointMaterial(table.joint_kn, table.joint_friction, table.joint_ks)
 slope = equivalent_slope.EquivalentSlope(
     shape=equivalent_slope.SlopeShape(**{**params.GALANDROOD_SHAPE, "columns": table.columns}), rock=params.TABLE_5_14,
-    main=joint, base=joint, base_joints=[], joints_into_foundation=True, joint_gap=table.joint_gap, bond_gap=table.bond_gap,
+    main=joint, base=joint, base_joints=[], joints_into_foundation=bool(table.joints_into_foundation),
+    joint_gap=table.joint_gap, bond_gap=table.bond_gap,
     rmin=table.rmin, rmax=table.rmax, porosity=table.porosity, seed=table.seed, timestep_safety=table.timestep_safety,
     damping=table.damping)
 protocol = equivalent_slope.protocol(table, slope)
