@@ -67,12 +67,13 @@ void DiscInteractionLoop::action()
 	const shared_ptr<LawFunctor> joints  = lawOf<Law2_ScGeom_SmoothJointPhys_SmoothJoint>(*lawDispatcher);
 	auto* const                  law     = static_cast<Law2_ScGeom_ParallelBondPhys_ParallelBond*>(bondLaw.get());
 	// The bonds in the array: within runSteps, unless their objects would have to be read back at once.
-	bool arrays = inRunSteps && bondLaw && discs && ((arraysCurrent && arraysValid()) || readerBeforeNextLoop() != Reader::any);
+	const bool current = arraysCurrent && arraysValid();
+	const bool arrays  = inRunSteps && bondLaw && discs && (current || readerBeforeNextLoop() != Reader::any);
 	// the bodies' motion as DiscNewtonIntegrator left it, unless Python may have changed it since
 	const bool moved = arrays && arraysCurrent && motionFresh;
 	motionFresh      = false;
 	arraysThisStep   = arrays;
-	if (arrays && !(arraysCurrent && arraysValid())) build(discs.get(), bondLaw.get());
+	if (arrays && !current) build(discs.get(), bondLaw.get());
 	if (!arrays) {
 		flush();
 		arraysCurrent = false;
@@ -84,7 +85,9 @@ void DiscInteractionLoop::action()
 	const int threads = 1;
 #endif
 	sums.reset(threads, motion.size());
-	promoted.assign(threads, {});
+	promoted.resize(threads);
+	for (auto& list : promoted)
+		list.clear(); // keeps its capacity: no allocation per step
 	const SumsInUse inUse({ bondLaw.get(), joints.get() }, &sums);
 
 	InteractionContainer& interactions = *scene->interactions;
