@@ -25,14 +25,14 @@ from yade import O
 from yade.utils import readParamsFromTable
 
 from examples import params
-from toppling.build import engines
+from toppling.build import engines, jcfpm
 from toppling.io import output
 from toppling.io.params import check
 from toppling.load import tilting
 from toppling.models import incline
 from toppling.run.steps import check_stable, run_steps
 
-readParamsFromTable(**params.TABLE_4_6, rmax=0.008, smooth=1, duration=0.6, seed=1,
+readParamsFromTable(**params.TABLE_4_6, rmax=0.008, smooth=1, duration=0.6, seed=1, model="ours",
                     out="results/block_on_incline", noTableOk=True)
 from yade.params import table  # noqa: E402  (filled by readParamsFromTable)
 
@@ -40,6 +40,7 @@ check(table, b="(0, inf)", h="(0, inf)", alpha="[0, 90)", phi="[0, 90)", rmax="(
 
 setup = incline.build(table.b, table.h, table.rmax / params.PACKING_R_RATIO, table.rmax, params.TABLE_5_6_ROCK, table.phi, smooth=bool(table.smooth),
                       seed=table.seed)
+jcfpm.use(table.model)  # ours, or the same scene in JCFpm (examples/jcfpm)
 tilting.set_tilt(table.alpha)
 a, t_tilt = math.radians(table.alpha), O.time
 x_start, history = O.bodies[setup.toe].state.pos[0], []

@@ -17,13 +17,14 @@ from yade import O
 from yade.utils import readParamsFromTable
 
 from examples import params
+from toppling.build import jcfpm
 from toppling.io import output
 from toppling.io.params import check
 from toppling.load import tilting
 from toppling.models import incline
 from toppling.run.steps import run_steps, steps_in
 
-readParamsFromTable(phi=math.degrees(math.atan(0.4)), rmax=0.012, porosity=0.2, step=0.25, stage_time=0.05, seed=1,
+readParamsFromTable(phi=math.degrees(math.atan(0.4)), rmax=0.012, porosity=0.2, step=0.25, stage_time=0.05, seed=1, model="ours",
                     out="results/tilt_slide", noTableOk=True)
 from yade.params import table  # noqa: E402  (filled by readParamsFromTable)
 
@@ -31,6 +32,7 @@ check(table, phi="[4, 86)", rmax="(0, inf)", porosity="(0, 1)", step="(0, 4]", s
 
 B, H = 0.2, 0.05
 setup = incline.build(B, H, table.rmax / params.PACKING_R_RATIO, table.rmax, params.TABLE_5_6_ROCK, table.phi, porosity=table.porosity, seed=table.seed)
+jcfpm.use(table.model)  # ours, or the same scene in JCFpm (examples/jcfpm)
 
 tilting.set_tilt(table.phi - 4)  # first tilt well below atan(mu), then settle there (damped)
 incline.settle(4 * table.stage_time)
