@@ -98,7 +98,7 @@ EQUIVALENT_SLOPE_RESULTS = dict(failure_tilt_deg=35, phi_deg=[15], s_over_h=0.79
 # until calibrated (toppling.models.equivalent_slope.from_params, .protocol).
 EQUIVALENT_SLOPE = dict(
     rmin=1.5e-3, rmax=3.5e-3, porosity=0.18, seed=1, spacing=0.0, strength_factor=1.0,  # m, m, -, -, m (0: 0.047), -
-    main_joint_friction=TABLE_5_6["main"][1], joint_stiffness_scale=0.01, base_joints="every_other", merged_pair=0,
+    main_joint_friction=TABLE_5_6["main"][1], joint_stiffness_scale=0.01, base_joints="every_other", base_plane_deg=0.0, merged_pair=0,
     joints_into_foundation=0, joint_gap=TABLE_5_6["gap"], z_order=0,  # joint_gap [m]: the joints' aperture when installed
     timestep_safety=0.8, damping=0.0, settle_damping=0.7,
     chunk=0.02, rest_speed=1e-3, fail_displacement=0.05, max_stage_time=2.0, fail_columns=2,  # s, m/s, m, s, -

@@ -53,6 +53,19 @@ def test_base_joints_as_data():
         base_model(strength_factor=0)
 
 
+def test_base_joints_on_a_plane_through_the_toe_cross_the_columns_it_meets_below_their_tops():
+    model = base_model(base_plane_deg=15.0)
+    rise = math.tan(math.radians(15.0))
+    assert [j.first for j in model.base_joints] == [1, 3, 5, 7, 9, 11, 13]  # column 15 is 0.170 m high, the plane 0.183 m
+    for j in model.base_joints:
+        assert j.height == pytest.approx(rise * (j.first - 0.5) * 0.047)
+    pair = base_model(base_plane_deg=15.0, merged_pair=4).base_joints
+    assert [(j.first, j.last) for j in pair] == [(1, 1), (3, 3), (4, 5), (7, 7), (9, 9), (11, 11), (13, 13)]
+    assert pair[2].height == pytest.approx(rise * 4 * 0.047)  # at the main joint between the pair
+    with pytest.raises(ValueError, match="base_plane_deg"):
+        base_model(base_plane_deg=90.0)
+
+
 def test_the_scene_is_bonded_rock_fixed_on_its_foundation_and_jointed_once_settled():
     model = base_model(rmin=0.008, rmax=0.016)
     layout = model.build()

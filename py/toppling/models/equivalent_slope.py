@@ -53,16 +53,24 @@ class BaseJoint:
     height: float = 0.0
 
 
-def every_other_column(count: int) -> list[BaseJoint]:
-    """The base model's base joints: one in every other column from the toe (1, 3, 5, ...)."""
-    return [BaseJoint(k, k) for k in range(1, count + 1, 2)]
+def every_other_column(layout: columns.ColumnLayout, plane_deg: float = 0.0) -> list[BaseJoint]:
+    """The base model's base joints: one in every other column from the toe (1, 3, 5, ...), where
+    a plane rising from the toe at ``plane_deg`` to the table plane crosses the column's centre,
+    in the columns it crosses below their tops."""
+    rise = math.tan(math.radians(plane_deg))
+    found = [BaseJoint(k, k, rise * (k - 0.5) * layout.width) for k in range(1, layout.count + 1, 2)]
+    return [j for j in found if j.height < layout.heights[j.first - 1]]
 
 
-def merged(joints_: Sequence[BaseJoint], n1: int) -> list[BaseJoint]:
-    """Table 5-7's case (N2-N1), N2 = n1 + 1: the base joints of columns n1 and n1 + 1 as one
-    joint crossing both (one of the two is a flexural column's, which had none)."""
-    kept = [j for j in joints_ if not (j.height == 0 and j.first == j.last and j.first in (n1, n1 + 1))]
-    return sorted(kept + [BaseJoint(n1, n1 + 1)], key=lambda j: (j.height, j.first))
+def merged(joints_: Sequence[BaseJoint], n1: int, height: float = 0.0) -> list[BaseJoint]:
+    """Table 5-7's case (N2-N1), N2 = n1 + 1: the lowest single-column base joint of columns n1
+    and n1 + 1 replaced by one joint crossing both at ``height`` (one of the two is a flexural
+    column, which had none)."""
+    pair = (n1, n1 + 1)
+    single = [j for j in joints_ if j.first == j.last and j.first in pair]
+    dropped = min(single, key=lambda j: j.height) if single else None
+    kept = [j for j in joints_ if j is not dropped]
+    return sorted(kept + [BaseJoint(n1, n1 + 1, height)], key=lambda j: (j.height, j.first))
 
 
 @dataclass(frozen=True)
@@ -109,8 +117,10 @@ class SlopeShape:
 class EquivalentSlope(BondedDiscs):
     """The model: ``shape``, ``rock`` (ParallelBondMat's keyword arguments, ``thickness``
     included), bonds between discs within ``bond_gap`` [m], main joints of ``main`` and base
-    joints (``base_joints``; None: every other column) of ``base`` material with ``joint_gap``
-    [m]; discs R ``rmin``-``rmax`` [m] packed at ``porosity`` with ``seed``. With
+    joints (``base_joints``; None: every other column, on a plane rising from the toe at
+    ``base_plane_deg`` to the table plane) of ``base`` material with ``joint_gap`` [m];
+    ``merged_pair`` N1 > 0 merges Table 5-7's pair (N1 + 1)-N1; discs R ``rmin``-``rmax`` [m]
+    packed at ``porosity`` with ``seed``. With
     ``joints_into_foundation`` the main joints run on down to the horizontal base (the other
     reading of the thesis' foundation: the flexural columns rooted at the held base, not at the
     table plane)."""
@@ -119,6 +129,8 @@ class EquivalentSlope(BondedDiscs):
     main: JointMaterial
     base: JointMaterial
     base_joints: list[BaseJoint] | None = None
+    base_plane_deg: float = 0.0
+    merged_pair: int = 0
     joints_into_foundation: bool = False
     z_order: bool = False
     timestep_safety: float = 0.5
@@ -129,8 +141,14 @@ class EquivalentSlope(BondedDiscs):
         super().__post_init__()
         engines.check_safety(self.timestep_safety, "timestep_safety")
         self.layout = self.shape.outline().layout()
+        require("base_plane_deg", self.base_plane_deg, "[0, 90)")
         if self.base_joints is None:
-            self.base_joints = every_other_column(self.layout.count)
+            self.base_joints = every_other_column(self.layout, self.base_plane_deg)
+        if self.merged_pair:
+            require("merged_pair", self.merged_pair, f"whole [1, {self.layout.count - 1}]")
+            centre = self.merged_pair * self.layout.width  # the main joint between the pair
+            self.base_joints = merged(self.base_joints, self.merged_pair,
+                                      centre * math.tan(math.radians(self.base_plane_deg)))
         for k, j in enumerate(self.base_joints):
             if not 1 <= j.first <= j.last <= self.layout.count:
                 raise ValueError(f"base_joints[{k}] = columns {j.first}-{j.last} is invalid: they must be columns "
@@ -209,7 +227,7 @@ def from_params(p: Any, thesis: Any) -> EquivalentSlope:
     ``strength_factor`` scales Table 5-5's bond tensile strength and cohesion together;
     ``main_joint_friction`` is the main joints' (Table 5-6: 0.12; Table 5-10 varies it from 0);
     ``spacing`` 0 is the thesis' 0.047 m; ``base_joints`` 'every_other', 'none' or explicit
-    (``parse_base_joints``), ``merged_pair`` N1 > 0 merges Table 5-7's pair (N1 + 1)-N1."""
+    (``parse_base_joints``), ``base_plane_deg`` and ``merged_pair`` as EquivalentSlope's."""
     require("strength_factor", p.strength_factor, "(0, inf)")
     require("main_joint_friction", p.main_joint_friction, "[0, inf)")
     require("joints_into_foundation", p.joints_into_foundation, "whole [0, 1]")
@@ -222,16 +240,13 @@ def from_params(p: Any, thesis: Any) -> EquivalentSlope:
     thesis_shape = thesis.EQUIVALENT_SLOPE_SHAPE
     shape = SlopeShape(**{**thesis_shape, "spacing": p.spacing or thesis_shape["spacing"]})
     base = None if p.base_joints == "every_other" else parse_base_joints(p.base_joints)
-    if p.merged_pair:
-        count = shape.outline().layout().count
-        require("merged_pair", p.merged_pair, f"whole [1, {count - 1}]")
-        base = merged(every_other_column(count) if base is None else base, p.merged_pair)
     return EquivalentSlope(
         shape=shape, rock=rock,
         main=JointMaterial(p.joint_stiffness_scale * joint["main"][0], p.main_joint_friction),
         base=JointMaterial(p.joint_stiffness_scale * joint["base"][0], joint["base"][1]),
         joint_gap=p.joint_gap, bond_gap=thesis.TABLE_5_5_BOND_GAP, rmin=p.rmin, rmax=p.rmax, porosity=p.porosity,
-        seed=p.seed, base_joints=base, joints_into_foundation=bool(p.joints_into_foundation), z_order=bool(p.z_order),
+        seed=p.seed, base_joints=base, base_plane_deg=p.base_plane_deg, merged_pair=p.merged_pair,
+        joints_into_foundation=bool(p.joints_into_foundation), z_order=bool(p.z_order),
         timestep_safety=p.timestep_safety,
         damping=p.damping)
 
