@@ -94,11 +94,13 @@ EQUIVALENT_SLOPE_RESULTS = dict(failure_tilt_deg=35, phi_deg=[15], s_over_h=0.79
                                 stable_zone_columns=(9, 13),  # §5.3.2, Fig 5-19
                                 monitoring_points=["C-3", "D-4", "G-7", "H-8", "I-9", "M-13", "N-14", "O-15"])  # Fig 5-20
 # The base model (examples/equivalent_slope/run.py's defaults): Table 5-5's discs at the packer's
-# porosity; joints x0.01 stiff as in the tilting table (the time step); strengths as Table 5-5
-# until calibrated (toppling.models.equivalent_slope.from_params, .protocol).
+# porosity; joints x0.01 stiff as in the tilting table (the time step); base joints on the tilting
+# table's design plane; calibrated (docs/cases/equivalent_slope.md): Table 5-5's bond strengths x 1.62
+# (cohesion 50 kPa, the tilting table's), main joints' friction 0.20 (Table 5-6: 0.12).
 EQUIVALENT_SLOPE = dict(
-    rmin=1.5e-3, rmax=3.5e-3, porosity=0.18, seed=1, spacing=0.0, strength_factor=1.0,  # m, m, -, -, m (0: 0.047), -
-    main_joint_friction=TABLE_5_6["main"][1], joint_stiffness_scale=0.01, base_joints="every_other", base_plane_deg=0.0, merged_pair=0,
+    rmin=1.5e-3, rmax=3.5e-3, porosity=0.18, seed=1, spacing=0.0, strength_factor=1.62,  # m, m, -, -, m (0: 0.047), -
+    main_joint_friction=0.20, joint_stiffness_scale=0.01, base_joints="every_other", base_plane_deg=DESIGN_PLANE_DEG,
+    merged_pair=0,
     joints_into_foundation=0, joint_gap=TABLE_5_6["gap"], z_order=0,  # joint_gap [m]: the joints' aperture when installed
     timestep_safety=0.8, damping=0.0, settle_damping=0.7,
     chunk=0.02, rest_speed=1e-3, fail_displacement=0.05, max_stage_time=2.0, fail_columns=2,  # s, m/s, m, s, -

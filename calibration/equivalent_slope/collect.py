@@ -48,7 +48,8 @@ def mean_sd(values: list[float], digits: int) -> str:
 
 
 def model_text(model: tuple) -> str:
-    keys = ("strength_factor", "main_joint_friction", "base_joints", "merged_pair", "spacing", "rmin", "rmax")
+    keys = ("strength_factor", "main_joint_friction", "base_plane_deg", "base_joints", "merged_pair", "spacing", "rmin",
+            "rmax")
     inputs = dict(model)
     return ", ".join(f"{k} {inputs[k]}" for k in keys if k in inputs)
 

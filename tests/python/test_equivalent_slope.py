@@ -36,7 +36,7 @@ def test_merged_pairs_lie_where_table_5_7_puts_them():
 
 
 def test_base_joints_as_data():
-    model = base_model(merged_pair=16)
+    model = base_model(merged_pair=16, base_plane_deg=0.0)
     spans = [(j.first, j.last) for j in model.base_joints]
     assert (16, 17) in spans and (17, 17) not in spans and (15, 15) in spans and len(spans) == 11
     assert [(j.first, j.last, j.height) for j in es.parse_base_joints("1-3;5@0.13")] == [(1, 3, 0.0), (5, 5, 0.13)]
@@ -68,6 +68,7 @@ def test_base_joints_on_a_plane_through_the_toe_cross_the_columns_it_meets_below
 
 def test_the_scene_is_bonded_rock_fixed_on_its_foundation_and_jointed_once_settled():
     model = base_model(rmin=0.008, rmax=0.016)
+    rise = math.tan(math.radians(model.base_plane_deg))
     layout = model.build()
     toe, foot, back = model.foundation()
     ids = [b.id for b in O.bodies]
@@ -82,9 +83,9 @@ def test_the_scene_is_bonded_rock_fixed_on_its_foundation_and_jointed_once_settl
         mid = 0.5 * (O.bodies[i].state.pos + O.bodies[j].state.pos)
         if s == 0:  # no main joint reaches into the foundation
             assert mid[1] > -model.rmax
-        else:  # the base joints lie on the table plane, each under a blocky column
-            assert abs(mid[1]) < model.rmax
-            assert any(layout.column_of(mid[0] + dx) % 2 == 1 for dx in (-model.rmax, 0, model.rmax))
+        else:  # the base joints lie on the base plane, each across a blocky column
+            k = next(c for c in (layout.column_of(mid[0] + dx) for dx in (0, -model.rmax, model.rmax)) if c % 2 == 1)
+            assert abs(mid[1] - rise * (k - 0.5) * layout.width) < model.rmax
 
 
 def test_main_joints_reach_the_foundations_edge_when_they_run_into_the_foundation():
