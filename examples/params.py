@@ -104,6 +104,7 @@ EQUIVALENT_SLOPE = dict(
     joints_into_foundation=0, joint_gap=TABLE_5_6["gap"], z_order=0,  # joint_gap [m]: the joints' aperture when installed
     timestep_safety=0.8, damping=0.0, settle_damping=0.7,
     chunk=0.02, rest_speed=1e-3, fail_displacement=0.05, max_stage_time=2.0, fail_columns=2,  # s, m/s, m, s, -
+    rest_window=0.2,  # [s] a standing slope rings without local damping: its speed is judged over this window
     post_failure_time=0.3, resume=-1, checkpoint_every=600.0, max_wall_time=0.0, exact_resume=0)  # s, -, wall s x2
 
 # ---- §5.4.2: Galandrood mine, BFTOP's input and result (Fig 5-44) ----

@@ -19,7 +19,7 @@ readParamsFromTable(**params.EQUIVALENT_SLOPE, out="results/equivalent_slope/bas
 from yade.params import table  # noqa: E402  (filled by readParamsFromTable)
 
 criteria = tilting.StageCriteria(table.chunk, table.rest_speed, table.fail_displacement, table.max_stage_time,
-                                 table.fail_columns)  # each checks its parameters before anything is built
+                                 table.fail_columns, table.rest_window)  # each checks its parameters before anything is built
 slope = equivalent_slope.from_params(table, params)
 protocol = equivalent_slope.protocol(table, slope)
 run = tilting_table.start(slope, protocol, criteria, output.table_inputs(table), table.out, table.resume)

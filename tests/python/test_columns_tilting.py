@@ -365,3 +365,18 @@ def test_a_failure_comes_to_rest_once_what_moves_has_dropped_off_the_table(empty
         assert expected <= came_to_rest <= expected + 2 * criteria.chunk
     with pytest.raises(ValueError, match="arrest_time = 0"):
         tilting.run_arrest([[still]], floor, criteria, arrest_time=0)
+
+
+def test_rest_is_judged_over_the_rest_window():
+    # A standing, undamped slope rings: a median 0.1 mm from where it was one window ago moves at
+    # 5 mm/s over one chunk but 0.5 mm/s over a 0.2 s window.
+    windowed = tilting.StageCriteria(chunk=0.02, rest_speed=1e-3, fail_displacement=0.05, max_stage_time=2.0,
+                                     rest_window=0.2)
+    assert windowed.window_chunks == 10
+    start, now = np.zeros((1, 2)), np.array([[1e-4, 0.0]])
+    assert tilting.stage_outcome(now, start, start, 1.0, windowed) == "equilibrium"
+    assert tilting.stage_outcome(now, None, start, 1.0, windowed) is None  # the stage is younger than a window
+    one_chunk = tilting.StageCriteria(chunk=0.02, rest_speed=1e-3, fail_displacement=0.05, max_stage_time=2.0)
+    assert tilting.stage_outcome(now, start, start, 1.0, one_chunk) is None
+    with pytest.raises(ValueError, match="rest_window = 0.01 is invalid"):
+        tilting.StageCriteria(chunk=0.02, rest_window=0.01)

@@ -150,15 +150,14 @@ class Search:
     def trial(self, factor: float) -> Trial:
         O.load(self.checkpoint)
         self.reduction.apply(factor)
-        reference = before = tilting.medians(self.groups)
+        reference, watch = tilting.medians(self.groups), tilting.Watch(self.groups, self.criteria)
         start, broken = O.time, broken_bonds()
         while True:
             run_checked(self.criteria.chunk, f"the trial at F = {factor:g}")
-            now, elapsed = tilting.medians(self.groups), O.time - start
+            (now, before), elapsed = watch.chunk_done(), O.time - start
             outcome = tilting.stage_outcome(now, before, reference, elapsed, self.criteria)
             if outcome == "failed" or (outcome == "equilibrium" and elapsed >= self.min_time):
                 break
-            before = now
         moved = float(np.linalg.norm(now - reference, axis=1).max())
         trial = Trial(factor, outcome == "failed", moved, broken_bonds() - broken, elapsed)
         self.trials.append(trial)

@@ -1,6 +1,7 @@
 """Tilting by rotating gravity (thesis Fig 5-7), in stages run to equilibrium or failure."""
 from __future__ import annotations
 
+import collections
 import math
 from dataclasses import dataclass
 from typing import Callable, Optional, Sequence
@@ -53,6 +54,9 @@ class StageCriteria:
     # how many watched groups must pass fail_displacement for the stage to fail; fewer are gone
     # (a toe column toppled off the table on its own) and no longer judged for rest
     fail_columns: int = 1
+    # [s] rest is judged on the medians' speed over this window (0: one chunk): without local
+    # damping a standing slope rings, and over one chunk a median's speed is the ringing's
+    rest_window: float = 0.0
 
     def __post_init__(self):
         for name in ("chunk", "rest_speed", "fail_displacement", "max_stage_time"):
@@ -60,6 +64,15 @@ class StageCriteria:
         require("fail_columns", self.fail_columns, "[1, inf)")
         if self.fail_columns != int(self.fail_columns):
             raise ValueError(f"fail_columns = {self.fail_columns} is invalid: it must be a whole number >= 1")
+        require("rest_window", self.rest_window, "[0, inf)")
+        if 0 < self.rest_window < self.chunk:
+            raise ValueError(f"rest_window = {self.rest_window} is invalid: it must be 0 (one chunk) or >= chunk "
+                             f"= {self.chunk}")
+
+    @property
+    def window_chunks(self) -> int:
+        """The chunks in rest_window (at least one)."""
+        return max(1, round(self.rest_window / self.chunk))
 
     def collapsed(self, off: np.ndarray) -> bool:
         """Whether enough watched groups are ``off`` (gone) for the stage to fail by fail_displacement:
@@ -107,22 +120,37 @@ def medians(groups: Sequence[Sequence[int]]) -> np.ndarray:
 
 def stage_outcome(now: np.ndarray, before: np.ndarray, reference: np.ndarray, elapsed: float,
                   criteria: StageCriteria) -> Optional[str]:
-    """The stage's outcome from the watched groups' medians ``now``, one chunk ago (``before``)
-    and at the stage's start (``reference``), ``elapsed`` seconds into it; None while it is
-    undecided.
+    """The stage's outcome from the watched groups' medians ``now``, ``window_chunks`` chunks ago
+    (``before``; None while the stage is younger) and at the stage's start (``reference``),
+    ``elapsed`` seconds into it; None while it is undecided.
     At the time limit a group still moving but whose mean speed over the stage is below
     rest_speed vibrates in place (without local damping a column can ring for seconds): that is
     equilibrium, not creep."""
     off = gone(now, reference, criteria)
     if criteria.collapsed(off):
         return "failed"
-    speed = np.linalg.norm(now - before, axis=1)[~off].max(initial=0.0) / criteria.chunk
+    window = criteria.window_chunks * criteria.chunk
+    speed = np.inf if before is None else np.linalg.norm(now - before, axis=1)[~off].max(initial=0.0) / window
     if speed < criteria.rest_speed:
         return "equilibrium"
     if elapsed > criteria.max_stage_time:
         drift = np.linalg.norm(now - reference, axis=1)[~off].max(initial=0.0) / elapsed
         return "failed" if drift >= criteria.rest_speed else "equilibrium"
     return None
+
+
+class Watch:
+    """The medians of watched groups of discs, kept over the last ``rest_window`` of chunks."""
+
+    def __init__(self, groups: Sequence[Sequence[int]], criteria: StageCriteria):
+        self.groups = groups
+        self.history = collections.deque([medians(groups)], maxlen=criteria.window_chunks + 1)
+
+    def chunk_done(self) -> tuple[np.ndarray, Optional[np.ndarray]]:
+        """The medians now and a rest window ago (None until the watch is that old)."""
+        self.history.append(medians(self.groups))
+        full = len(self.history) == self.history.maxlen
+        return self.history[-1], self.history[0] if full else None
 
 
 def on_table(groups: Sequence[Sequence[int]], floor: float) -> list[list[int]]:
@@ -170,12 +198,11 @@ def run_stage(alpha_deg: float, watched: Sequence[Sequence[int]], reference: np.
     ``start``: the simulated time the stage began (now by default; a resumed run passes the
     checkpointed one, so max_stage_time counts the whole stage)."""
     set_tilt(alpha_deg)
-    start, before = O.time if start is None else start, medians(watched)
+    start, watch = O.time if start is None else start, Watch(watched, criteria)
     while True:
         run_checked(criteria.chunk, f"the stage at {alpha_deg} deg")
-        now = medians(watched)
+        now, before = watch.chunk_done()
         outcome = stage_outcome(now, before, reference, O.time - start, criteria)
-        before = now
         if on_chunk:
             on_chunk()
         if outcome:
