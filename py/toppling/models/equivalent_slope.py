@@ -17,14 +17,15 @@ figures only (Figs 5-16 … 5-18, 5-20); our reconstruction from its text and ta
   through the toe, up to a vertical right side where the last column ends (the thesis fixes
   "the right side ... in x and the base in x and y"; in the table frame both are held in x and y,
   the right side lying in the no-movement zone). No main joint enters it.
-* **Base joints** on the table plane, one per blocky column (every other column from the toe),
-  so that a blocky column rests on a joint and a flexural one is bonded to the foundation ("its
-  lack of joint base", §5.3.2). Table 5-7's D/H, the horizontal distance from the toe to the
-  centre of a merged pair of base joints (N2-N1) over H, checks this: our merged joint spans
-  columns N1 and N2 = N1 + 1, its centre at the main joint between them, D/H =
-  N1 · spacing · cos α / H = 0.0811 N1; the table's sixteen values lie within 0.02 of it (case I,
-  17-16: 1.30 against 1.31; case XVI, 2-1: 0.081 against 0.08). A plane rising from the toe at
-  15°, as the tilting table's design plane, would give 0.066 N1.
+* **Base joints**, one per blocky column (every other column from the toe), on a plane rising
+  from the toe at ``base_plane_deg`` to the table plane, so that a blocky column rests on a
+  joint and a flexural one is bonded through ("its lack of joint base", §5.3.2). The base model
+  puts it at the tilting table's design plane (15°): the thesis' equivalent slope is its ideal
+  model turned by 35°. Table 5-7's D/H (the horizontal distance from the toe to the centre of a
+  merged pair (N2-N1), over H) would rather put it on the table plane (D/H = N1 · spacing · cos α
+  / H = 0.0811 N1, within 0.02 of the table's sixteen values; 0.066 N1 on the 15° plane), but
+  there the slope stands or slides on that plane at every strength and friction the thesis
+  allows (docs/cases/equivalent_slope.md), where the thesis' topples above a surface at 15°.
 
 A base joint is a ``BaseJoint``: the columns it crosses and its height above the table plane,
 so that merged joints, one continuous joint and a second set are data.
