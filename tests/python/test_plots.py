@@ -58,3 +58,10 @@ def test_the_model_picture_draws_each_joint_set_in_its_colour_and_marks_the_fixe
     rgb = image.imread(path)[..., :3]
     orange = (rgb[..., 0] > 0.9) & (rgb[..., 1] > 0.4) & (rgb[..., 1] < 0.7) & (rgb[..., 2] < 0.2)
     assert orange.sum() > 50  # the cross joint's set, drawn darkorange
+
+
+def test_zone_labels_of_many_columns_mark_where_the_zone_changes():
+    few = [(k, 0.0, "toppling") for k in range(5)]
+    assert plots.zone_labels(few) == few
+    many = [(k, 0.0, "sliding" if k < 3 else "toppling" if k < 40 else "no-movement") for k in range(80)]
+    assert plots.zone_labels(many) == [(0, 0.0, "sliding"), (3, 0.0, "toppling"), (40, 0.0, "no-movement")]

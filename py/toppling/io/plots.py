@@ -75,6 +75,17 @@ def model(out: str, name: str, centres: np.ndarray, radii: Sequence[float], disp
     return output.save_figure(fig, out, name)
 
 
+MAX_ZONE_LABELS = 30  # one per column up to this many; beyond, where the zone changes (they would overlap)
+
+
+def zone_labels(zones: Sequence[tuple[float, float, str]]) -> list[tuple[float, float, str]]:
+    """The (x, y, zone) labels to draw, columns in order: all, or for many columns the first of
+    each run of one zone."""
+    if len(zones) <= MAX_ZONE_LABELS:
+        return list(zones)
+    return [z for k, z in enumerate(zones) if k == 0 or z[2] != zones[k - 1][2]]
+
+
 def slope(out: str, name: str, centres: np.ndarray, radii: Sequence[float], displacement: np.ndarray,
           cracks: np.ndarray, modes: Sequence[int], planes: Sequence[Plane] = (), toe=(0.0, 0.0),
           title: str = "", limits: Optional[tuple[float, float, float, float]] = None,
@@ -96,7 +107,7 @@ def slope(out: str, name: str, centres: np.ndarray, radii: Sequence[float], disp
         x = np.array(plane.x_range)
         ax.plot(toe[0] + x, toe[1] + plane.intercept + plane.slope * x, style, lw=width,
                 label=f"{what}: phi = {plane.phi_deg:.1f} deg")
-    for x, y, zone in zones:
+    for x, y, zone in zone_labels(zones):
         ax.text(x, y, zone.replace("no-movement", "none"), rotation=90, ha="center", va="bottom", fontsize=7,
                 color=ZONE_COLOURS.get(zone, "k"))
     _view(ax, centres, limits)

@@ -92,8 +92,8 @@ def report_failure(run: TiltRun, out: str, thesis: dict, name: str) -> None:
               "rerun with a lower start_tilt")
     distances = ", ".join(f"{label} {summary[key]:.2f}" if summary[key] is not None else f"{label} -"
                           for label, key in (("S/H", "s_over_h"), ("T/H", "t_over_h")))
-    print(f"{name}: failure tilt {tilt:.1f} deg (thesis {thesis['failure_tilt_deg']})"
-          f"{arrested_text(summary['arrested_failures'])}, {phi_text} (thesis {thesis['phi_deg']}), {distances}, "
+    print(f"{name}: failure tilt {tilt:.1f} deg{beside(thesis.get('failure_tilt_deg'))}"
+          f"{arrested_text(summary['arrested_failures'])}, {phi_text}{beside(thesis.get('phi_deg'))}, {distances}, "
           f"{summary['tensile_breaks']} tensile / {summary['shear_breaks']} shear breaks, {len(run.ids)} discs, "
           f"{summary['wall_time']:.0f} s")
 
@@ -137,6 +137,12 @@ def plot_slope(run: TiltRun, out: str, name: str, result: dict, breaks: int, tit
                 result["planes"], toe=(run.layout.toe_x, 0.0), limits=view(run), title=title,
                 overall=result["overall"] if len(result["planes"]) > 1 else None,
                 zones=zone_marks(run, result["zones"]))
+
+
+def beside(thesis_value) -> str:
+    """The thesis' figure in brackets, or nothing where the thesis gives none (a slope judged at
+    its own tilt has no failure tilt to compare)."""
+    return "" if thesis_value is None or thesis_value == [] else f" (thesis {thesis_value})"
 
 
 def plot_failure(run: TiltRun, out: str, name: str, onset: dict, after: dict, thesis: dict) -> None:
