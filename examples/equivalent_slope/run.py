@@ -22,6 +22,7 @@ criteria = tilting.StageCriteria(table.chunk, table.rest_speed, table.fail_displ
                                  table.fail_columns, table.rest_window)  # each checks its parameters before anything is built
 slope = equivalent_slope.from_params(table, params)
 protocol = equivalent_slope.protocol(table, slope)
-run = tilting_table.start(slope, protocol, criteria, output.table_inputs(table), table.out, table.resume)
+run = tilting_table.start(slope, protocol, criteria, output.table_inputs(table), table.out, table.resume,
+                          table.model)
 run.run()
 tilt_report.report(run, table.out, params.EQUIVALENT_SLOPE_RESULTS, "equivalent slope")

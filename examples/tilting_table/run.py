@@ -23,7 +23,8 @@ protocol = tilt_run.TiltProtocol.from_params(table)  # each checks its parameter
 criteria = tilting.StageCriteria(table.chunk, table.rest_speed, table.fail_displacement, table.max_stage_time,
                                  table.fail_columns)
 slope = tilting_table.from_params(table, params)
-run = tilting_table.start(slope, protocol, criteria, output.table_inputs(table), table.out, table.resume)
+run = tilting_table.start(slope, protocol, criteria, output.table_inputs(table), table.out, table.resume,
+                          table.model)
 if not table.disc_path:
     engines.set_fast(False)
 run.run()

@@ -7,10 +7,10 @@ import re
 
 import pytest
 from yade import O
-from yade.wrapper import ParallelBondMat
+from yade.wrapper import Law2_ScGeom_JCFpmPhys_JointedCohesiveFrictionalPM, ParallelBondMat
 
 from conftest import ROCK
-from toppling.build import bonding, columns, engines, geometry, packing
+from toppling.build import bonding, columns, engines, geometry, jcfpm, packing
 from toppling.build.discs import disc
 from toppling.io import tilt_report
 from toppling.load import tilting
@@ -127,6 +127,20 @@ def test_bonds_broken_by_the_ramp_to_the_start_tilt_are_counted_and_reported(emp
     tilt_report.report(run, str(tmp_path), {"failure_tilt_deg": 0, "phi_deg": [0]}, "cantilever")
     assert f"rerun with a start_tilt below {before['first_ramp_crack_deg']:.1f} deg" in capsys.readouterr().out
     assert json.loads((tmp_path / "summary.json").read_text())["breaks_before_stages"] == before
+
+
+def test_a_run_handed_to_jcfpm_counts_and_reports_its_cracks(empty_scene, tmp_path, monkeypatch, capsys):
+    monkeypatch.chdir(tmp_path)  # JCFpm writes its cracks' file in the working directory
+    run = cantilever_run(tmp_path, protocol(start_tilt=30.0, max_tilt=30.0), tensile_strength=8e3)
+    jcfpm.convert(cracks=True)
+    run.run()
+    law = engines.functor(Law2_ScGeom_JCFpmPhys_JointedCohesiveFrictionalPM)
+    record = jcfpm.CrackRecord.of_scene()
+    assert len(record.breakMode) == law.nbTensCracks + law.nbShearCracks == engines.broken_bonds() > 0
+    assert record.breakMode.count(2) == law.nbTensCracks and all(0 < t <= O.time for t in record.breakTime)
+    tilt_report.report(run, str(tmp_path), {"failure_tilt_deg": 0, "phi_deg": [0]}, "cantilever")
+    summary = json.loads((tmp_path / "summary.json").read_text())
+    assert summary["tensile_breaks"] + summary["shear_breaks"] == len(record.breakMode)
 
 
 def ramp_breaks(tmp_path, start_tilt: float) -> dict:

@@ -8,7 +8,7 @@ from yade import O, utils
 from yade.wrapper import Sphere
 
 from toppling.build import packing
-from toppling.build.engines import bond_law, limit_timestep
+from toppling.build.engines import break_record, limit_timestep
 from toppling.checks import require
 
 
@@ -68,8 +68,13 @@ def bond_within_gap(gap: float = 0.0, ids: Optional[Sequence[int]] = None) -> in
 
 
 def intact_bonds(body_id: int) -> int:
-    """Number of intact parallel bonds of a disc."""
-    return sum(1 for i in O.bodies[body_id].intrs() if getattr(i.phys, "bondState", 0) == 1)
+    """Number of intact bonds of a disc (parallel bonds, or JCFpm's cohesive contacts)."""
+    return sum(1 for i in O.bodies[body_id].intrs() if is_bond(i.phys))
+
+
+def is_bond(phys) -> bool:
+    """Whether an interaction's physics is an intact bond: ours, or JCFpm's cohesive contact."""
+    return getattr(phys, "bondState", 0) == 1 or getattr(phys, "isCohesive", False)
 
 
 def rock(ids: Sequence[int], min_bonds: int = 2) -> list[int]:
@@ -89,10 +94,13 @@ def rock_breaks(first: int, count: int) -> list[int]:
     over. The others freed a disc, or left it hanging by one bond: a joint can leave a disc or a
     pair bonded across the pore between joint planes by two bonds or fewer, and when a tilt shakes
     it off both bonds go within a millisecond (the first break, of discs each held by two bonds,
-    looks like a crack until the second). That is debris coming off, not a crack in the rock."""
-    law = bond_law()
+    looks like a crack until the second). That is debris coming off, not a crack in the rock.
+    A record that does not name the pairs (JCFpm's) counts every break as a crack."""
+    law = break_record()
     pairs = list(zip(law.breakId1, law.breakId2))
     end = first + count
+    if not pairs:
+        return list(range(first, end))
     later = defaultdict(int)  # bonds each disc lost after the window, intact at its end
     for pair in pairs[end:]:
         for i in pair:

@@ -127,6 +127,17 @@ def bond_law() -> Law2_ScGeom_ParallelBondPhys_ParallelBond:
     return functor(Law2_ScGeom_ParallelBondPhys_ParallelBond)
 
 
+def break_record():
+    """The scene's record of broken bonds: our parallel-bond law, or in a scene handed to JCFpm
+    its cracks read as our law keeps them (``toppling.build.jcfpm.CrackRecord``): breakPosition,
+    breakMode (BREAK_MODES), breakTime, breakId1 and breakId2."""
+    try:
+        return bond_law()
+    except LookupError:
+        from toppling.build import jcfpm  # it builds on this module
+        return jcfpm.CrackRecord.of_scene()
+
+
 def broken_bonds() -> int:
     """How many bonds have broken so far (in either mode)."""
-    return len(bond_law().breakMode)
+    return len(break_record().breakMode)

@@ -19,6 +19,8 @@ stiffness per area times πR²min). How ours maps onto it (docs/jcfpm.md):
 from __future__ import annotations
 
 import math
+import os
+import time
 from dataclasses import dataclass
 from typing import Optional
 
@@ -28,19 +30,24 @@ from yade.wrapper import (Bo1_Sphere_Aabb, ForceResetter, GlobalStiffnessTimeSte
                           JCFpmState, Law2_ScGeom_JCFpmPhys_JointedCohesiveFrictionalPM, NewtonIntegrator,
                           ParallelBondMat, ParallelBondPhys, SmoothJointMat, SmoothJointPhys, Sphere)
 
-from toppling.build import engines
+from toppling.build import engines, joints
 from toppling.checks import require
 
 MAX_JOINTS_PER_DISC = 3  # JCFpmState.jointNormal1..3
 MODELS = ("ours", "jcfpm")
 
 
-def use(model: str) -> None:
-    """Hand the scene just built to ``model``: 'ours' leaves it, 'jcfpm' converts it (``convert``)."""
+def check_model(model: str) -> None:
     if model not in MODELS:
         raise ValueError(f"model = {model!r} is invalid: it must be 'ours' or 'jcfpm'")
+
+
+def use(model: str, cracks: bool = False) -> None:
+    """Hand the scene just built to ``model``: 'ours' leaves it, 'jcfpm' converts it (``convert``,
+    recording its cracks with ``cracks``)."""
+    check_model(model)
     if model == "jcfpm":
-        convert()
+        convert(cracks=cracks)
 
 
 def material(rock: ParallelBondMat, joint: Optional[SmoothJointMat], radius: float) -> JCFpmMat:
@@ -117,10 +124,14 @@ def jcfpm_state(state, normals: list) -> JCFpmState:
     return new
 
 
-def jcfpm_engines(gravity, damping: float, safety: float) -> list:
+def jcfpm_engines(gravity, damping: float, safety: float, cracks: bool, ours) -> list:
+    """JCFpm's engines; ``ours`` (our Ip2, or None) stays in the dispatcher, idle once no disc is of
+    our material, holding the joints' geometry and blocks for the pictures."""
+    law = Law2_ScGeom_JCFpmPhys_JointedCohesiveFrictionalPM(smoothJoint=True, recordCracks=cracks,
+                                                             Key=f"toppling-{os.getpid()}-{time.time_ns()}")
+    ip2 = [Ip2_JCFpmMat_JCFpmMat_JCFpmPhys(cohesiveTresholdIteration=0)] + ([ours] if ours is not None else [])
     return [ForceResetter(), InsertionSortCollider([Bo1_Sphere_Aabb()]),
-            InteractionLoop([Ig2_Sphere_Sphere_ScGeom()], [Ip2_JCFpmMat_JCFpmMat_JCFpmPhys(cohesiveTresholdIteration=0)],
-                            [Law2_ScGeom_JCFpmPhys_JointedCohesiveFrictionalPM(smoothJoint=True)]),
+            InteractionLoop([Ig2_Sphere_Sphere_ScGeom()], ip2, [law]),
             GlobalStiffnessTimeStepper(timestepSafetyCoefficient=safety, timeStepUpdateInterval=100),
             NewtonIntegrator(gravity=gravity, damping=damping)]
 
@@ -130,29 +141,34 @@ def mean_radius() -> float:
     return sum(radii) / len(radii)
 
 
-def convert(exact: bool = True, safety: float = 0.5) -> dict[str, int]:
+def convert(exact: bool = True, safety: float = 0.5, cracks: bool = False) -> dict[str, int]:
     """Turn the current scene (our discs, bonds and smooth joints) into JCFpm's: every disc of
     ParallelBondMat gets ``material`` at the discs' mean radius (the first joint set's values for
     joints) and a JCFpmState, the engines become JCFpm's (gravity and local damping kept, time
     step by GlobalStiffnessTimeStepper with ``safety``), and every bond, joint and contact pair
     is made again, bonds cohesive; with ``exact`` each gets ours (module docstring). Returns how
-    many pairs of each kind, and ``misread``: pairs JCFpm took for another kind than ours."""
+    many pairs of each kind, and ``misread``: pairs JCFpm took for another kind than ours.
+    With ``cracks`` JCFpm records its cracks (``CrackRecord``; a file in the working directory)."""
     engines.check_safety(safety)
     pairs = [pair_of(i) for i in O.interactions if i.isReal]
     rocks = {b.material for b in O.bodies if b is not None and isinstance(b.material, ParallelBondMat)}
     if len(rocks) != 1:
         raise ValueError(f"the scene has {len(rocks)} rock materials: the conversion needs exactly one ParallelBondMat")
-    joints = [m for m in O.materials if isinstance(m, SmoothJointMat)]
-    mat = material(rocks.pop(), joints[0] if joints else None, mean_radius())
+    joint_sets = [m for m in O.materials if isinstance(m, SmoothJointMat)]
+    mat = material(rocks.pop(), joint_sets[0] if joint_sets else None, mean_radius())
     newton = engines.newton()
     gravity, damping = newton.gravity, newton.damping
+    try:
+        ours = joints.rock_functor()
+    except LookupError:
+        ours = None
     normals = joint_states(pairs)
     O.materials.append(mat)
     O.interactions.clear()
     for b in O.bodies:
         if b is not None and isinstance(b.material, ParallelBondMat):
             b.material, b.state = mat, jcfpm_state(b.state, normals.get(b.id, []))
-    O.engines = jcfpm_engines(gravity, damping, safety)
+    O.engines = jcfpm_engines(gravity, damping, safety, cracks, ours)
     ip2 = O.engines[2].physDispatcher.functors[0]
     counts = {"bond": 0, "joint": 0, "contact": 0, "misread": 0}
     for p in pairs:
@@ -166,3 +182,35 @@ def convert(exact: bool = True, safety: float = 0.5) -> dict[str, int]:
                 phys.FnMax, phys.FsMax = p.fn_max, p.fs_max
     ip2.cohesiveTresholdIteration = 0  # contacts made from now on are frictional, as ours
     return counts
+
+
+class CrackRecord:
+    """JCFpm's cracks as our law records its breaks: breakPosition, breakMode (2 tension, 3 shear),
+    breakTime, breakNormal, breakSize, breakEnergy, read from the file JCFpm's law writes with
+    ``recordCracks`` (``cracks_<Key>.txt`` in the working directory), up to the scene's iteration
+    (a run resumed from a checkpoint leaves out the cracks of the run it replaces). JCFpm does not
+    say which pair broke: breakId1 and breakId2 are empty."""
+    breakId1 = breakId2 = ()
+
+    def __init__(self, path: str):
+        self.path = path
+        rows = []
+        if os.path.exists(path):
+            with open(path) as f:
+                next(f, None)  # the header
+                rows = [[float(v) for v in line.split()] for line in f if line.strip()]
+        rows = [r for r in rows if r[0] <= O.iter]
+        self.breakTime = [r[1] for r in rows]
+        self.breakPosition = [tuple(r[2:5]) for r in rows]
+        self.breakMode = [2 if r[5] == 1 else 3 for r in rows]
+        self.breakSize = [r[6] for r in rows]
+        self.breakNormal = [tuple(r[7:10]) for r in rows]
+        self.breakEnergy = [r[10] for r in rows]
+
+    @classmethod
+    def of_scene(cls) -> "CrackRecord":
+        """The record of the scene's JCFpm law (LookupError if it has none or it records no cracks)."""
+        law = engines.functor(Law2_ScGeom_JCFpmPhys_JointedCohesiveFrictionalPM)
+        if not law.recordCracks:
+            raise LookupError("the scene's JCFpm law records no cracks: convert(cracks=True)")
+        return cls(f"cracks_{law.Key}.txt")

@@ -30,7 +30,7 @@ import numpy as np
 from yade import O
 from yade.wrapper import ParallelBondPhys, SmoothJointPhys, Sphere
 
-from toppling.build import boundary, engines, joints
+from toppling.build import bonding, boundary, engines, joints
 
 KINDS = ("discs", "bonds", "cracks", "joints")
 
@@ -108,15 +108,16 @@ class ParaViewSeries:
     def _bonds(self, pos: np.ndarray):
         cells, sigma, tau = [], [], []
         for I in O.interactions:
-            if I.isReal and isinstance(I.phys, ParallelBondPhys) and I.phys.bondState == 1:
+            if I.isReal and bonding.is_bond(I.phys):
                 cells.append((self.index[I.id1], self.index[I.id2]))
-                sigma.append(I.phys.bondSigmaMax)
-                tau.append(I.phys.bondTauMax)
+                ours = isinstance(I.phys, ParallelBondPhys)  # JCFpm keeps no bond stresses
+                sigma.append(I.phys.bondSigmaMax if ours else float("nan"))
+                tau.append(I.phys.bondTauMax if ours else float("nan"))
         return _grid(pos, cells, VTK_LINE, {}, {"sigma_max": sigma, "tau": tau})
 
     @staticmethod
     def _cracks():
-        law = engines.bond_law()
+        law = engines.break_record()
         points = np.array([tuple(p) for p in law.breakPosition]).reshape(-1, 3)
         return _grid(points, [(k,) for k in range(len(points))], VTK_VERTEX, {}, {
             "mode": list(law.breakMode), "time": list(law.breakTime),

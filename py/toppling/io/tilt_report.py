@@ -131,7 +131,7 @@ def zone_marks(run: TiltRun, zones: list[str]) -> list[tuple[float, float, str]]
 def plot_slope(run: TiltRun, out: str, name: str, result: dict, breaks: int, title: str) -> None:
     """The slope of ``result`` (TiltRun.analyse): displacement since the last equilibrium, the
     first ``breaks`` cracks by mode, the fitted surface(s) and the zones by column."""
-    law = engines.bond_law()
+    law = engines.break_record()
     cracks = np.array([tuple(p)[:2] for p in law.breakPosition][:breaks]).reshape(-1, 2)
     plots.slope(out, name, result["now"], radii(run), result["disp"], cracks, list(law.breakMode)[:breaks],
                 result["planes"], toe=(run.layout.toe_x, 0.0), limits=view(run), title=title,

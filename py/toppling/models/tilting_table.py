@@ -18,7 +18,7 @@ from yade import O
 from yade.wrapper import ParallelBondMat, SmoothJointMat
 
 from toppling.analyse import failure
-from toppling.build import bonding, boundary, columns, engines, geometry, joints, packing
+from toppling.build import bonding, boundary, columns, engines, geometry, jcfpm, joints, packing
 from toppling.build.discs import add_discs
 from toppling.io import output, paraview
 from toppling.load import tilting
@@ -242,12 +242,14 @@ def from_params(p: Any, thesis: Any) -> TiltingTable:
 
 
 def start(model, protocol: tilt_run.TiltProtocol, criteria: tilting.StageCriteria, inputs: dict,
-          out: str, resume: int) -> tilt_run.TiltRun:
+          out: str, resume: int, laws: str = "ours") -> tilt_run.TiltRun:
     """The run of ``model`` (a TiltingTable, or any model with its ``build``, ``expected_discs``,
     ``column_top_bands``, ``rmin`` and ``rmax``; with a ``settled()`` method, called once the
     model stands at the protocol's settle_tilt) in ``out`` with ``inputs`` (the parameters it was
     made from): built afresh, or continued from the checkpoint there (``resume``:
-    Checkpoint.continues)."""
+    Checkpoint.continues). ``laws`` 'jcfpm' hands the scene to YADE's JCFpm once it is jointed
+    (``toppling.build.jcfpm``)."""
+    jcfpm.check_model(laws)
     output.prepare_out(out, OUTPUT_BYTES_PER_DISC * model.expected_discs())
     checkpoint = Checkpoint(out)
     if checkpoint.continues(inputs, resume, free=tilt_run.FREE):
@@ -259,6 +261,8 @@ def start(model, protocol: tilt_run.TiltProtocol, criteria: tilting.StageCriteri
     else:
         output.discard_summary(out)
         layout = model.build()
+        if not hasattr(model, "settled"):  # jointed as built
+            jcfpm.use(laws, cracks=True)
         ids = [b.id for b in O.bodies if b is not None]
         points = column_top_points(layout, bonding.rock(ids))  # a loose top disc may drop off the table
         state = tilt_run.fresh_state(inputs, layout, ids, model.column_top_bands(layout), protocol.start_tilt)
@@ -268,6 +272,7 @@ def start(model, protocol: tilt_run.TiltProtocol, criteria: tilting.StageCriteri
     def joints_known() -> None:  # the pictures colour the blocks the joints made
         settled()
         series.block_of_body = joints.blocks()
+        jcfpm.use(laws, cracks=True)
 
     return tilt_run.TiltRun(protocol, criteria, checkpoint, state, points, series, model.rmin, model.rmax,
                             settled=joints_known if settled else None)

@@ -122,7 +122,7 @@ def sort_breaks_before_stages(before: dict, ramp_tilt: Callable[[float], float])
             "ramp": bonding.rock_breaks(before["level"], before["ramp"])}
     before["loose"] = {phase: before[phase] - len(breaks) for phase, breaks in rock.items()}
     if rock["ramp"]:
-        before["first_ramp_crack_deg"] = ramp_tilt(engines.bond_law().breakTime[rock["ramp"][0]])
+        before["first_ramp_crack_deg"] = ramp_tilt(engines.break_record().breakTime[rock["ramp"][0]])
     return before
 
 
@@ -274,7 +274,7 @@ class TiltRun:
         result = failure.table_failure(
             self.layout, reference, now, {label: index[i] for label, i in zip(self.points.labels, self.points.ids)},
             lambda label: self.points.rate_since(label, since, until) > self.criteria.rest_speed,
-            [tuple(p)[:2] for p in engines.bond_law().breakPosition][:breaks], tilt, floor=self.off_table,
+            [tuple(p)[:2] for p in engines.break_record().breakPosition][:breaks], tilt, floor=self.off_table,
             band=2 * self.rmax, least_motion=self.rmin)  # the model's resolution
         return {**result, "disp": now - reference, "now": now}
 
@@ -422,7 +422,7 @@ class TiltRun:
 
     def record(self) -> dict:
         """What every summary holds besides the failure: cracks, failures that came to rest, size and cost."""
-        modes = engines.bond_law().breakMode
+        modes = engines.break_record().breakMode
         failed = [stage for stage in self.state["stages"] if stage["outcome"] == "failed"]
         keys = ("tilt", "came_to_rest_after_s", "left_table", "discs_off_table", "breaks", "moved_mm", "phi_deg",
                 "s_over_h", "t_over_h")
