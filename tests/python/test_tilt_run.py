@@ -3,6 +3,7 @@ joint's friction angle, also when the run stops at a stage and continues from it
 import dataclasses
 import json
 import math
+import os
 import re
 
 import pytest
@@ -141,6 +142,7 @@ def test_a_run_handed_to_jcfpm_counts_and_reports_its_cracks(empty_scene, tmp_pa
     tilt_report.report(run, str(tmp_path), {"failure_tilt_deg": 0, "phi_deg": [0]}, "cantilever")
     summary = json.loads((tmp_path / "summary.json").read_text())
     assert summary["tensile_breaks"] + summary["shear_breaks"] == len(record.breakMode)
+    assert (tmp_path / "jcfpm_cracks.txt").exists() and not os.path.exists(record.path)  # kept with the run
 
 
 def ramp_breaks(tmp_path, start_tilt: float) -> dict:

@@ -188,8 +188,9 @@ class CrackRecord:
     """JCFpm's cracks as our law records its breaks: breakPosition, breakMode (2 tension, 3 shear),
     breakTime, breakNormal, breakSize, breakEnergy, read from the file JCFpm's law writes with
     ``recordCracks`` (``cracks_<Key>.txt`` in the working directory), up to the scene's iteration
-    (a run resumed from a checkpoint leaves out the cracks of the run it replaces). JCFpm does not
-    say which pair broke: breakId1 and breakId2 are empty."""
+    (a run resumed from a checkpoint leaves out the cracks of the run it replaces; it must be
+    resumed from the same directory). JCFpm does not say which pair broke: breakId1 and breakId2
+    are empty."""
     breakId1 = breakId2 = ()
 
     def __init__(self, path: str):
@@ -214,3 +215,14 @@ class CrackRecord:
         if not law.recordCracks:
             raise LookupError("the scene's JCFpm law records no cracks: convert(cracks=True)")
         return cls(f"cracks_{law.Key}.txt")
+
+
+def keep_cracks(out: str) -> None:
+    """Move the scene's JCFpm cracks' file (if it records any) from the working directory into
+    ``out`` (as jcfpm_cracks.txt): the run is over."""
+    try:
+        path = CrackRecord.of_scene().path
+    except LookupError:  # not a JCFpm scene, or one that records no cracks
+        return
+    if os.path.exists(path):
+        os.replace(path, os.path.join(out, "jcfpm_cracks.txt"))

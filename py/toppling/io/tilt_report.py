@@ -9,7 +9,7 @@ import numpy as np
 from yade import O
 
 from toppling.analyse import failure
-from toppling.build import boundary, engines, joints
+from toppling.build import boundary, engines, jcfpm, joints
 from toppling.io import output, plots
 from toppling.run.tilt_run import TiltRun, arrested_text, ramp_warning
 
@@ -30,6 +30,7 @@ def report(run: TiltRun, out: str, thesis: dict, name: str) -> None:
         report_stable(run, out, thesis, name)
     else:
         report_failure(run, out, thesis, name)
+    jcfpm.keep_cracks(out)  # a stopped run leaves it where JCFpm goes on writing when it resumes
 
 
 def report_stopped(run: TiltRun, out: str, thesis: dict) -> None:
