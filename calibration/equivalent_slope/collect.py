@@ -12,7 +12,9 @@ from examples import params
 from toppling.analyse.seeds import fmt
 from toppling.io.reader import read_summaries
 
-RUN_ONLY = ("out", "resume", "checkpoint_every", "max_wall_time", "post_failure_time", "seed", "exact_resume")
+# rest_window only decides how soon a standing run is seen at rest
+RUN_ONLY = ("out", "resume", "checkpoint_every", "max_wall_time", "post_failure_time", "seed", "exact_resume",
+            "rest_window")
 # figure: (target, half-width of its band) — §5.3.2 and Fig 5-19
 TARGETS = {"phi_overall_deg": (15.0, 3.0), "s_over_h": (0.79, 0.10), "t_over_h": (0.20, 0.10),
            "stable_first": (9, 1), "stable_last": (13, 1)}
@@ -27,7 +29,8 @@ def figures(s: dict) -> dict[str, Optional[float]]:
 
 
 def model_of(s: dict) -> tuple:
-    return tuple(sorted((k, v) for k, v in s["inputs"].items() if k not in RUN_ONLY))
+    inputs = {"model": "ours", **s["inputs"]}  # runs from before JCFpm could run them
+    return tuple(sorted((k, v) for k, v in inputs.items() if k not in RUN_ONLY))
 
 
 def verdict(values: list[float], target: float, band: float) -> str:
@@ -48,8 +51,8 @@ def mean_sd(values: list[float], digits: int) -> str:
 
 
 def model_text(model: tuple) -> str:
-    keys = ("strength_factor", "main_joint_friction", "base_plane_deg", "base_joints", "merged_pair", "spacing", "rmin",
-            "rmax")
+    keys = ("model", "strength_factor", "main_joint_friction", "base_plane_deg", "base_joints", "merged_pair", "spacing",
+            "rmin", "rmax")
     inputs = dict(model)
     return ", ".join(f"{k} {inputs[k]}" for k in keys if k in inputs)
 

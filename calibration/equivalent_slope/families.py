@@ -12,7 +12,8 @@ Our reading of the cases (the thesis' drawings are missing):
   columns 1-3; IV each base joint (columns 1, 3, ...) extended across the next column (1-2, 3-4,
   ...); V the base set and a copy of it 0.13 m up the columns. III and IV lie on the base set's
   plane (``base_plane_deg``) at their centres, as merged pairs do.
-* Table 5-9: main-joint spacing 0.0235 m and 0.094 m, the discs of the base model.
+* Table 5-9: main-joint spacing 0.0235 m on discs half the base model's (R 0.75-1.75 mm: the
+  columns keep their width / Rmax of 13.4) and 0.094 m on the base model's.
 * Table 5-10: main-joint friction 0 ... 0.6; case 1, the thesis' base model, at its 0.12 (ours is
   calibrated at 0.20).
 """
@@ -50,7 +51,9 @@ def cases() -> list[tuple[str, dict]]:
               ("t58_III_toe", {"base_joints": on_plane([(1, 3)])}),
               ("t58_IV_pairs", {"base_joints": on_plane([(k, k + 1) for k, _ in BLOCKY])}),
               ("t58_V_second_set", {"base_joints": on_plane(BLOCKY)[:-1] + ";" + on_plane(BLOCKY, 0.13)[1:]})]
-    found += [("t59_I_0.0235", {"spacing": 0.0235}), ("t59_II_0.094", {"spacing": 0.094})]
+    # half the spacing on discs half the size: the columns keep their width / Rmax (13.4)
+    fine = {"rmin": params.EQUIVALENT_SLOPE["rmin"] / 2, "rmax": params.EQUIVALENT_SLOPE["rmax"] / 2}
+    found += [("t59_I_0.0235", {"spacing": 0.0235, **fine}), ("t59_II_0.094", {"spacing": 0.094})]
     found += [(f"t510_{case}_mu{mu}", {"main_joint_friction": mu})
               for case, mu in ((1, 0.12), (2, 0.0), (3, 0.176), (4, 0.26), (5, 0.36), (6, 0.46), (7, 0.56), (8, 0.58), (9, 0.6))]
     return found
@@ -58,13 +61,13 @@ def cases() -> list[tuple[str, dict]]:
 
 def main() -> None:
     base = params.EQUIVALENT_SLOPE
-    columns = ["description", "seed", "spacing", "base_joints", "merged_pair", "main_joint_friction", "out"]
+    columns = ["description", "seed", "spacing", "base_joints", "merged_pair", "main_joint_friction", "rmin", "rmax", "out"]
     rows = []
-    for name, change in cases():
-        for seed in SEEDS:
+    for seed in SEEDS:  # seed by seed: a sweep stopped part way has every case on the first packings
+        for name, change in cases():
             row = {"description": f"{name}_s{seed}", "seed": seed, "spacing": base["spacing"],
                    "base_joints": repr(base["base_joints"]), "merged_pair": base["merged_pair"],
-                   "main_joint_friction": base["main_joint_friction"],
+                   "main_joint_friction": base["main_joint_friction"], "rmin": base["rmin"], "rmax": base["rmax"],
                    "out": f"'results/equivalent_slope/families/{name}_s{seed}'", **change}
             rows.append([str(row[c]) for c in columns])
     width = [max(len(c), *(len(r[k]) for r in rows)) for k, c in enumerate(columns)]
