@@ -6,6 +6,7 @@ examples/jcfpm/*.table (run them first, as each table's header says).
 import statistics
 import sys
 
+from toppling.analyse.seeds import fmt
 from toppling.io.reader import read_summaries
 
 
@@ -41,8 +42,24 @@ def column(folder: str) -> None:
               f"{statistics.mean(s['wall_time'] for s in found):.0f} |")
 
 
+def slopes(folder: str) -> None:
+    """The tilting table and the equivalent slope, seed by seed (paired), where they have been run."""
+    for case in ("tilting_table", "equivalent_slope"):
+        runs = read_summaries(f"{folder}/{case}")
+        if not runs:
+            continue
+        print(f"\n{case}:\n\n| seed | model | fails at (°) | φ (°) | S/H | T/H | stable columns | breaks | wall time (s) |\n"
+              "|---|---|---|---|---|---|---|---|---|")
+        for s in sorted(runs.values(), key=lambda s: (s["inputs"]["seed"], s["inputs"]["model"])):
+            stable = ", ".join(map(str, s.get("stable_zone_columns") or [])) or "-"
+            print(f"| {s['inputs']['seed']} | {s['inputs']['model']} | {fmt(s.get('failure_tilt_deg'))} | "
+                  f"{fmt(s.get('phi_overall_deg'))} | {fmt(s.get('s_over_h'), 2)} | {fmt(s.get('t_over_h'), 2)} | "
+                  f"{stable} | {s.get('tensile_breaks')} / {s.get('shear_breaks')} | {s.get('wall_time', 0):.0f} |")
+
+
 if __name__ == "__main__":
     root = sys.argv[1] if len(sys.argv) > 1 else "results/jcfpm"
     tilt_slide(root)
     block_on_incline(root)
     column(root)
+    slopes(root)
