@@ -41,10 +41,9 @@ def loaded_pair(model: str, load: str):
     phys = O.interactions[a, b].phys
     pulled = min(mat.bondTensileStrength, mat.bondCohesion / math.tan(mat.bondFrictionAngle))
     strength = (pulled if load == "pull" else mat.bondCohesion) * phys.bondArea
-    slowest = phys.bondKn * phys.bondArea if load == "pull" else phys.bondKs * phys.bondArea  # the bond alone
+    slowest = (phys.bondKn if load == "pull" else phys.bondKs) * phys.bondArea  # the bond alone
     O.dt = 0.1 * math.sqrt(O.bodies[b].state.mass / phys.kn)
-    if model == "jcfpm":
-        jcfpm.convert()
+    jcfpm.use(model)
     moving = O.bodies[b].state
     moving.blockedDOFs = "xyzXYZ"
     speed = strength / slowest / (table.steps_to_break * O.dt)
@@ -58,7 +57,7 @@ def peak(model: str, load: str) -> dict:
     moving, interaction, strength = loaded_pair(model, load)
     axis = 0 if load == "pull" else 1
     start, history = moving.pos[axis], []
-    while interaction.isReal and intact(model, interaction.phys) and O.iter < 20 * table.steps_to_break:
+    while interaction.isReal and bonding.is_bond(interaction.phys) and O.iter < 20 * table.steps_to_break:
         before = abs(moving.pos[axis] - start)
         run_steps(1)
         history.append((before, abs(O.forces.f(interaction.id2)[axis])))
@@ -66,10 +65,6 @@ def peak(model: str, load: str) -> dict:
         raise RuntimeError(f"{model}, {load}: the bond did not break")
     moved, force = history[len(history) // 2]
     return {"peak_force": max(f for _, f in history), "closed_form": strength, "stiffness": force / moved}
-
-
-def intact(model: str, phys) -> bool:
-    return phys.isCohesive if model == "jcfpm" else phys.bondState == 1
 
 
 rows = {load: {model: peak(model, load) for model in ("ours", "jcfpm")} for load in ("pull", "shear")}
