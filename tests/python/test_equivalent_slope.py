@@ -88,6 +88,13 @@ def test_the_scene_is_bonded_rock_fixed_on_its_foundation_and_jointed_once_settl
             assert abs(mid[1] - rise * (k - 0.5) * layout.width) < model.rmax
 
 
+def test_without_base_joints_only_the_main_joints_cut_the_rock():
+    model = base_model(rmin=0.008, rmax=0.016, base_joints="none")
+    model.build()
+    model.settled()
+    assert set(joints.rock_functor().joints.pairSet) == {0}  # Table 5-8 case II: no base joint at all
+
+
 def test_main_joints_reach_the_foundations_edge_when_they_run_into_the_foundation():
     through = base_model(joints_into_foundation=1).main_joints()
     toe, foot, back = base_model().foundation()

@@ -209,8 +209,10 @@ class EquivalentSlope(BondedDiscs):
         """Install the joints in the settled, bonded rock (thesis §5.3.2: "in the final step")."""
         t, (toe, foot, back) = self.rock["thickness"], self.foundation()
         lo, hi = (back[0] - 1, foot[1] - 1), (toe[0] + 1, max(self.layout.heights) + 1)
-        joints.install_joints([(self.main_joints(), self.main.material(self.joint_gap, t)),
-                               (self.base_joint_set(), self.base.material(self.joint_gap, t))], lo=lo, hi=hi)
+        sets = [(self.main_joints(), self.main.material(self.joint_gap, t))]
+        if self.base_joints:  # a set without segments would be one persistent joint along the table plane
+            sets.append((self.base_joint_set(), self.base.material(self.joint_gap, t)))
+        joints.install_joints(sets, lo=lo, hi=hi)
         print(f"joints installed: {len(self.layout.heights) - 1} main, {len(self.base_joints)} base", flush=True)
 
     def column_top_bands(self, layout: columns.ColumnLayout) -> dict[str, list[int]]:
