@@ -118,7 +118,7 @@ def medians(groups: Sequence[Sequence[int]]) -> np.ndarray:
     return np.array([np.median(positions(group), axis=0) for group in groups])
 
 
-def stage_outcome(now: np.ndarray, before: np.ndarray, reference: np.ndarray, elapsed: float,
+def stage_outcome(now: np.ndarray, before: Optional[np.ndarray], reference: np.ndarray, elapsed: float,
                   criteria: StageCriteria) -> Optional[str]:
     """The stage's outcome from the watched groups' medians ``now``, ``window_chunks`` chunks ago
     (``before``; None while the stage is younger) and at the stage's start (``reference``),
