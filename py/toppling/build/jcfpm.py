@@ -47,7 +47,8 @@ def use(model: str, cracks: bool = False) -> None:
     recording its cracks with ``cracks``)."""
     check_model(model)
     if model == "jcfpm":
-        convert(cracks=cracks)
+        counts = convert(cracks=cracks)
+        print("handed to JCFpm: " + ", ".join(f"{n} {kind}" for kind, n in counts.items()), flush=True)
 
 
 def material(rock: ParallelBondMat, joint: Optional[SmoothJointMat], radius: float) -> JCFpmMat:
