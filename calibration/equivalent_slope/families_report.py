@@ -15,7 +15,7 @@ import sys
 import matplotlib.pyplot as plt
 from scipy import stats
 
-from toppling.analyse.seeds import fmt
+from collect import mean_sd  # this folder's: runs as a script
 from toppling.io import output
 from toppling.io.reader import read_summaries
 
@@ -37,12 +37,6 @@ def by_case(folder: str) -> dict[str, list[dict]]:
 
 def values(runs: list[dict], key: str) -> list[float]:
     return [s[key] for s in runs if s.get("failed") and s.get(key) is not None]
-
-
-def mean_sd(xs: list[float], digits: int) -> str:
-    if not xs:
-        return "-"
-    return fmt(xs[0], digits) if len(xs) == 1 else f"{statistics.mean(xs):.{digits}f} ± {statistics.stdev(xs):.{digits}f}"
 
 
 def stands(runs: list[dict]) -> bool:

@@ -170,7 +170,7 @@ def convert(exact: bool = True, safety: float = 0.5, cracks: bool = False) -> di
         if b is not None and isinstance(b.material, ParallelBondMat):
             b.material, b.state = mat, jcfpm_state(b.state, normals.get(b.id, []))
     O.engines = jcfpm_engines(gravity, damping, safety, cracks, ours)
-    ip2 = O.engines[2].physDispatcher.functors[0]
+    ip2 = engines.functor(Ip2_JCFpmMat_JCFpmMat_JCFpmPhys, "physDispatcher")
     counts = {"bond": 0, "joint": 0, "contact": 0, "misread": 0}
     for p in pairs:
         ip2.cohesiveTresholdIteration = O.iter + 1 if p.kind == "bond" else 0
