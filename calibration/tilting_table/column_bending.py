@@ -23,6 +23,7 @@ from yade import O
 
 from examples import params
 from toppling.build import engines, geometry, packing
+from toppling.lem.flexural import base_tension
 from toppling.load import tilting
 from toppling.models import tilting_table
 from toppling.run.steps import run_checked, run_steps
@@ -43,11 +44,6 @@ def value(text: str):
         return ast.literal_eval(text)
     except (ValueError, SyntaxError):
         return text
-
-
-def base_tension(gamma: float, width: float, height: float, tilt_deg: float) -> float:
-    a = math.radians(tilt_deg)
-    return 3 * gamma * height**2 * math.sin(a) / width - gamma * height * math.cos(a)
 
 
 def main() -> None:

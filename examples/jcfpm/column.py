@@ -20,6 +20,7 @@ from examples import params
 from toppling.build import boundary, engines, geometry, jcfpm, packing
 from toppling.io import output
 from toppling.io.params import check
+from toppling.lem import flexural
 from toppling.load import tilting
 from toppling.models.tilting_table import bonded_rock
 from toppling.run.steps import check_stable, run_steps, steps_in
@@ -53,9 +54,8 @@ while tilt < 89:
         break
 wall = time.time() - start
 
-rho_g, strength = ROCK["density"] * engines.G, min(ROCK["bondTensileStrength"], ROCK["bondCohesion"] / math.tan(ROCK["bondFrictionAngle"]))
-beam = math.degrees(next(a for a in (math.radians(x / 100) for x in range(1, 9000))
-                         if 3 * rho_g * table.h**2 * math.sin(a) / table.b - rho_g * table.h * math.cos(a) >= strength))
+strength = min(ROCK["bondTensileStrength"], ROCK["bondCohesion"] / math.tan(ROCK["bondFrictionAngle"]))
+beam = flexural.breaking_tilt(ROCK["density"] * engines.G, table.b, table.h, strength)
 output.write_summary(table.out, output.table_inputs(table), failure_tilt_deg=history[-1][0], beam_theory_deg=beam,
                      history=history, discs=len(ids), steps=O.iter, wall_time=wall)
 print(f"{table.model}: breaks at {history[-1][0]:.1f} deg (beam theory {beam:.1f} deg), {len(ids)} discs, "

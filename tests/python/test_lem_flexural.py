@@ -65,3 +65,12 @@ def test_galandrood_by_limit_equilibrium_brackets_bftop():
     result = json.loads(out)
     assert result["goodman_bray"]["factor_of_safety"] is None and result["goodman_bray"]["toe_force"] > 0
     assert result["flexural"]["stable"] and result["flexural"]["factor_of_safety"] > result["bftop_thesis"]["factor_of_safety"]
+
+
+def test_the_breaking_tilt_is_where_beam_theorys_base_tension_reaches_the_strength():
+    gamma, width, height, strength = 2900 * 9.81, 0.05, 0.45, 186.6e3
+    tilt = flexural.breaking_tilt(gamma, width, height, strength)
+    assert flexural.base_tension(gamma, width, height, tilt) == pytest.approx(strength, rel=1e-12)
+    assert flexural.base_tension(gamma, width, height, tilt - 0.1) < strength
+    with pytest.raises(ValueError, match="strength"):
+        flexural.breaking_tilt(gamma, width, height, 1e9)

@@ -24,6 +24,22 @@ from toppling.checks import require
 from toppling.lem.geometry import SlopeGeometry
 
 
+def base_tension(unit_weight: float, width: float, height: float, tilt_deg: float) -> float:
+    """Beam theory's tensile stress at the base of a free-standing column ``width`` × ``height``
+    tilted by ``tilt_deg``: bending 3 γ h² sin α / b less the weight's compression γ h cos α."""
+    a = math.radians(tilt_deg)
+    return 3 * unit_weight * height**2 * math.sin(a) / width - unit_weight * height * math.cos(a)
+
+
+def breaking_tilt(unit_weight: float, width: float, height: float, strength: float) -> float:
+    """The tilt [deg] at which ``base_tension`` reaches ``strength``: A sin α − B cos α = σ, so
+    α = asin(σ / √(A² + B²)) + atan(B / A)."""
+    bend, weight = 3 * unit_weight * height**2 / width, unit_weight * height
+    reach = math.hypot(bend, weight)
+    if strength > reach:
+        raise ValueError(f"strength = {strength} is invalid: the column's base tension never exceeds {reach:g} Pa")
+    return math.degrees(math.asin(strength / reach) + math.atan2(weight, bend))
+
 @dataclass(frozen=True)
 class Rock:
     unit_weight: float  # γ
