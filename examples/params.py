@@ -78,6 +78,7 @@ TILTING_TABLE_IDEAL = dict(
     base_joint_friction=0.0, joint_stiffness_scale=0.01, bond_gap=0.0, cut_rules=1, joint_pieces=1, z_order=0,
     disc_path=1,  # 1: DiscInteractionLoop, DiscNewtonIntegrator; 0: YADE's generic engines (the same results)
     model="ours",  # 'jcfpm': the same scene in YADE's JCFpm (docs/jcfpm.md)
+    settled_dir="",  # a folder: runs that differ only in joints or laws share the settled rock kept there
     timestep_safety=0.8, damping=0.0, settle_damping=0.7,  # local damping while tilting, on the level table
     start_tilt=26.0, step=2.0, max_tilt=45.0, tilt_rate=50.0, stage_rate=10.0,  # deg, deg, deg, deg/s, deg/s
     chunk=0.02, rest_speed=1e-3, fail_displacement=0.05, max_stage_time=2.0, fail_columns=2,  # s, m/s, m, s, -
@@ -107,6 +108,7 @@ EQUIVALENT_SLOPE = dict(
     chunk=0.02, rest_speed=1e-3, fail_displacement=0.05, max_stage_time=2.0, fail_columns=2,  # s, m/s, m, s, -
     rest_window=0.2,  # [s] a standing slope rings without local damping: its speed is judged over this window
     model="ours",  # 'jcfpm': the same scene in YADE's JCFpm (docs/jcfpm.md)
+    settled_dir="",  # a folder: runs that differ only in joints or laws share the settled rock kept there
     post_failure_time=0.3, resume=-1, checkpoint_every=600.0, max_wall_time=0.0, exact_resume=0)  # s, -, wall s x2
 
 # ---- §5.4.2: Galandrood mine, BFTOP's input and result (Fig 5-44) ----

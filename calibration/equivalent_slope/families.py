@@ -59,16 +59,21 @@ def cases() -> list[tuple[str, dict]]:
     return found
 
 
+SETTLED = "results/equivalent_slope/settled"  # a case settles its packing once (tilt_run.settled_store)
+
+
 def main() -> None:
     base = params.EQUIVALENT_SLOPE
-    columns = ["description", "seed", "spacing", "base_joints", "merged_pair", "main_joint_friction", "rmin", "rmax", "out"]
+    columns = ["description", "seed", "spacing", "base_joints", "merged_pair", "main_joint_friction", "rmin", "rmax", "out",
+               "settled_dir"]
     rows = []
     for seed in SEEDS:  # seed by seed: a sweep stopped part way has every case on the first packings
         for name, change in cases():
             row = {"description": f"{name}_s{seed}", "seed": seed, "spacing": base["spacing"],
                    "base_joints": repr(base["base_joints"]), "merged_pair": base["merged_pair"],
                    "main_joint_friction": base["main_joint_friction"], "rmin": base["rmin"], "rmax": base["rmax"],
-                   "out": f"'results/equivalent_slope/families/{name}_s{seed}'", **change}
+                   "out": f"'results/equivalent_slope/families/{name}_s{seed}'", "settled_dir": f"'{SETTLED}'",
+                   **change}
             rows.append([str(row[c]) for c in columns])
     width = [max(len(c), *(len(r[k]) for r in rows)) for k, c in enumerate(columns)]
     with open(TABLE, "w") as f:

@@ -6,9 +6,10 @@ import math
 import os
 import re
 
+import numpy as np
 import pytest
 from yade import O
-from yade.wrapper import Law2_ScGeom_JCFpmPhys_JointedCohesiveFrictionalPM, ParallelBondMat
+from yade.wrapper import Law2_ScGeom_JCFpmPhys_JointedCohesiveFrictionalPM, ParallelBondMat, SmoothJointPhys
 
 from conftest import ROCK
 from toppling.build import bonding, columns, engines, geometry, jcfpm, packing
@@ -44,13 +45,21 @@ def protocol(**changes) -> tilt_run.TiltProtocol:
                                            checkpoint_every=600.0), **changes})
 
 
-def fresh_run(tmp_path, p: tilt_run.TiltProtocol, criteria: tilting.StageCriteria = CRITERIA) -> tilt_run.TiltRun:
+def fresh_run(tmp_path, p: tilt_run.TiltProtocol, criteria: tilting.StageCriteria = CRITERIA,
+              **settling) -> tilt_run.TiltRun:
+    """The block on its joint, built afresh; ``settling``: TiltRun's ``settled`` and ``store``."""
     setup = incline.build(0.1, 0.05, RMIN, RMAX, ROCK, FRICTION_DEG)
     layout = columns.ColumnLayout(toe_x=0.15, width=0.1, heights=[0.05])  # the block as column A-1
     state = tilt_run.fresh_state({"case": "block"}, layout, setup.block + setup.base, {"A-1": setup.block},
                                  p.start_tilt)
-    points = MonitoringPoints(["A-1"], [setup.toe])
-    return tilt_run.TiltRun(p, criteria, Checkpoint(str(tmp_path)), state, points, Series(), RMIN, RMAX)
+    state["points"] = MonitoringPoints(["A-1"], [setup.toe]).as_dict()
+    return saved_run(tmp_path, p, state, criteria, **settling)
+
+
+def saved_run(tmp_path, p: tilt_run.TiltProtocol, state: dict, criteria: tilting.StageCriteria = CRITERIA,
+              **settling) -> tilt_run.TiltRun:
+    return tilt_run.TiltRun(p, criteria, Checkpoint(str(tmp_path)), state, MonitoringPoints.from_dict(state["points"]),
+                            Series(state.get("series")), RMIN, RMAX, **settling)
 
 
 def cantilever_run(tmp_path, p: tilt_run.TiltProtocol, tensile_strength: float, shrink: bool = True) -> tilt_run.TiltRun:
@@ -74,10 +83,7 @@ def cantilever_run(tmp_path, p: tilt_run.TiltProtocol, tensile_strength: float, 
 
 
 def resumed_run(tmp_path, p: tilt_run.TiltProtocol) -> tilt_run.TiltRun:
-    checkpoint = Checkpoint(str(tmp_path))
-    state = checkpoint.load()
-    return tilt_run.TiltRun(p, CRITERIA, checkpoint, state, MonitoringPoints.from_dict(state["points"]),
-                            Series(state["series"]), RMIN, RMAX)
+    return saved_run(tmp_path, p, Checkpoint(str(tmp_path)).load())
 
 
 def tilts(run: tilt_run.TiltRun) -> list[tuple[float, str]]:
@@ -250,3 +256,39 @@ def test_a_stage_that_ends_at_its_time_limit_says_so():
     stage = {"tilt": 20.0, "outcome": "equilibrium", "moved_mm": 0.1, "gone": []}
     assert tilt_run.stage_line(stage) == "tilt 20.0 deg: equilibrium (a column top moved 0.1 mm)"
     assert "equilibrium at max_stage_time (still moving" in tilt_run.stage_line({**stage, "at_time_limit": True})
+
+
+def joint_friction(mu: float):
+    """What a model may do once its rock has settled: here, give the block's joint friction ``mu``."""
+    def settled() -> None:
+        for i in O.interactions:
+            if isinstance(i.phys, SmoothJointPhys):
+                i.phys.tangensOfFrictionAngle = mu
+    return settled
+
+
+def test_runs_that_differ_only_once_settled_share_the_settled_scene_and_go_on_as_if_each_had_settled_it(
+        empty_scene, tmp_path, capsys):
+    store = Checkpoint(str(tmp_path / "settled"))
+    first = fresh_run(tmp_path / "first", protocol(), settled=joint_friction(0.4), store=store)
+    assert first.run() == 23.0 and store.exists()  # tan 21.8 deg: as built
+    O.reset()
+    shared = saved_run(tmp_path / "shared", protocol(), store.load(), settled=joint_friction(0.5), store=store)
+    assert shared.run() == 27.0  # tan 26.6 deg: the joint's friction, given once settled
+    assert tilts(shared)[0] == (17.0, "equilibrium") and shared.state["breaks_before_stages"] is not None
+    moved = tilting.positions(shared.ids)
+    O.reset()
+    alone = fresh_run(tmp_path / "alone", protocol(), settled=joint_friction(0.5),
+                      store=Checkpoint(str(tmp_path / "own")))
+    assert alone.run() == 27.0
+    assert np.array_equal(tilting.positions(alone.ids), moved)  # to the last bit
+
+
+def test_the_settled_scene_is_shared_by_runs_that_differ_only_in_what_is_done_once_settled(tmp_path):
+    inputs = {"seed": 1, "friction": 0.2, "out": "a", "resume": -1, "description": "a"}
+    store = tilt_run.settled_store(str(tmp_path), inputs, differ_in=("friction",))
+    same_rock = {**inputs, "friction": 0.5, "out": "b", "resume": 0, "description": "b"}
+    assert tilt_run.settled_store(str(tmp_path), same_rock, ("friction",)).scene_path == store.scene_path
+    other_rock = {**inputs, "seed": 2}
+    assert tilt_run.settled_store(str(tmp_path), other_rock, ("friction",)).scene_path != store.scene_path
+    assert tilt_run.settled_store("", inputs, ("friction",)) is None

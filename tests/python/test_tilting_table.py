@@ -79,10 +79,10 @@ def killed(command: list[str], env: dict, out, after: str, delay: float, saving:
     for line in proc.stdout:
         if line.startswith(after):
             break
-    deadline, written = time.monotonic() + delay, out / "checkpoint.saving.yade.bz2"
+    deadline = time.monotonic() + delay
     while proc.poll() is None and time.monotonic() < deadline:
         time.sleep(0.01)
-    while saving and proc.poll() is None and not written.exists():
+    while saving and proc.poll() is None and not any(out.glob("checkpoint.saving-*.yade.bz2")):
         time.sleep(0.0005)
     if proc.poll() is not None:
         return False

@@ -224,6 +224,11 @@ class EquivalentSlope(BondedDiscs):
         return n1 * self.layout.width * math.cos(math.radians(self.shape.tilt_deg)) / self.shape.height
 
 
+# from_params' parameters that act only once the rock has settled (tilt_run.settled_store)
+JOINT_INPUTS = ("base_joints", "base_plane_deg", "merged_pair", "main_joint_friction", "joint_stiffness_scale",
+                "joint_gap", "joints_into_foundation", "model")
+
+
 def from_params(p: Any, thesis: Any) -> EquivalentSlope:
     """The model from a parameter set ``p`` (``yade.params.table``; the names of
     examples/params.py's EQUIVALENT_SLOPE) and the thesis' tables ``thesis`` (examples/params.py).

@@ -10,8 +10,9 @@ thesis' cases comes from the caller (examples/params.py).
 from __future__ import annotations
 
 import math
+import os
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, Optional
 
 import numpy as np
 from yade import O
@@ -241,13 +242,33 @@ def from_params(p: Any, thesis: Any) -> TiltingTable:
         timestep_safety=p.timestep_safety, damping=p.damping)
 
 
+def built(model, laws: str, inputs: dict, protocol: tilt_run.TiltProtocol) -> dict[str, Any]:
+    """The state of a run on ``model`` built afresh."""
+    layout = model.build()
+    if not hasattr(model, "settled"):  # jointed as built
+        jcfpm.use(laws, cracks=True)
+    ids = [b.id for b in O.bodies if b is not None]
+    points = column_top_points(layout, bonding.rock(ids))  # a loose top disc may drop off the table
+    state = tilt_run.fresh_state(inputs, layout, ids, model.column_top_bands(layout), protocol.start_tilt)
+    return {**state, "points": points.as_dict()}
+
+
+def settled_rock(store: Checkpoint) -> dict[str, Any]:
+    """The state of a run starting from the settled scene another run of the same rock left in ``store``."""
+    state = store.load()
+    state["settled_from"] = os.path.dirname(store.scene_path)
+    print(f"the settled rock from {state['settled_from']} (its settling took {state['wall_time']:.0f} s)", flush=True)
+    return state
+
+
 def start(model, protocol: tilt_run.TiltProtocol, criteria: tilting.StageCriteria, inputs: dict,
-          out: str, resume: int, laws: str = "ours") -> tilt_run.TiltRun:
+          out: str, resume: int, laws: str = "ours", store: Optional[Checkpoint] = None) -> tilt_run.TiltRun:
     """The run of ``model`` (a TiltingTable, or any model with its ``build``, ``expected_discs``,
     ``column_top_bands``, ``rmin`` and ``rmax``; with a ``settled()`` method, called once the
     model stands at the protocol's settle_tilt) in ``out`` with ``inputs`` (the parameters it was
-    made from): built afresh, or continued from the checkpoint there (``resume``:
-    Checkpoint.continues). ``laws`` 'jcfpm' hands the scene to YADE's JCFpm once it is jointed
+    made from): continued from the checkpoint there (``resume``: Checkpoint.continues), else
+    from the settled scene in ``store`` (tilt_run.settled_store) if a run of the same rock left
+    one, else built afresh. ``laws`` 'jcfpm' hands the scene to YADE's JCFpm once it is jointed
     (``toppling.build.jcfpm``)."""
     jcfpm.check_model(laws)
     output.prepare_out(out, OUTPUT_BYTES_PER_DISC * model.expected_discs())
@@ -256,16 +277,11 @@ def start(model, protocol: tilt_run.TiltProtocol, criteria: tilting.StageCriteri
         state = checkpoint.load()
         print(f"resuming {out} in its {state['phase']['name']} phase at {state['tilt']} deg "
               "(resume=0 starts afresh)", flush=True)
-        state["inputs"] = inputs  # the run goes on with these (resume=1 may change any): the same command continues it
-        points = MonitoringPoints.from_dict(state["points"])
     else:
         output.discard_summary(out)
-        layout = model.build()
-        if not hasattr(model, "settled"):  # jointed as built
-            jcfpm.use(laws, cracks=True)
-        ids = [b.id for b in O.bodies if b is not None]
-        points = column_top_points(layout, bonding.rock(ids))  # a loose top disc may drop off the table
-        state = tilt_run.fresh_state(inputs, layout, ids, model.column_top_bands(layout), protocol.start_tilt)
+        state = settled_rock(store) if store is not None and store.exists() else built(model, laws, inputs, protocol)
+    state["inputs"] = inputs  # the run goes on with these (resume=1 may change any): the same command continues it
+    points = MonitoringPoints.from_dict(state["points"])
     series = paraview.ParaViewSeries(f"{out}/paraview", joints.blocks(), state.get("series"))
     settled = getattr(model, "settled", None)
 
@@ -275,4 +291,4 @@ def start(model, protocol: tilt_run.TiltProtocol, criteria: tilting.StageCriteri
         jcfpm.use(laws, cracks=True)
 
     return tilt_run.TiltRun(protocol, criteria, checkpoint, state, points, series, model.rmin, model.rmax,
-                            settled=joints_known if settled else None)
+                            settled=joints_known if settled else None, store=store)

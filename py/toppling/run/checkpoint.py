@@ -25,13 +25,14 @@ class Checkpoint:
 
     def save(self, state: dict[str, Any]) -> None:
         # Written aside and moved into place in one rename: a run killed while saving (a long run
-        # is stopped at any moment) leaves the previous checkpoint whole.
+        # is stopped at any moment) leaves the previous checkpoint whole; aside under the process'
+        # own name, as runs sharing a settled scene may save the same one at once.
         text = json.dumps(state)
         O.tags[self.TAG] = text
-        scene_tmp = self.scene_path.replace("checkpoint.", "checkpoint.saving.")
+        scene_tmp = self.scene_path.replace("checkpoint.", f"checkpoint.saving-{os.getpid()}.")
         O.save(scene_tmp)
         os.replace(scene_tmp, self.scene_path)
-        state_tmp = self.state_path + ".tmp"
+        state_tmp = f"{self.state_path}.{os.getpid()}.tmp"
         with open(state_tmp, "w") as f:
             f.write(text)
         os.replace(state_tmp, self.state_path)

@@ -3,12 +3,16 @@ table, gravity turns slowly to the start tilt, then by a step per stage until a 
 the failure may come to rest and the tilting go on; after the failure the run goes on so that
 the failure surface develops. The run is checkpointed after every stage and every
 ``checkpoint_every`` wall seconds, and a run made from its checkpoint continues in the phase it
-stopped in (level, ramp, stage, arrest, post, analysis); with ``exact_resume`` as the run that
-never stopped would have, to the last bit."""
+stopped in (level, jointing, ramp, stage, arrest, post, analysis); with ``exact_resume`` as the
+run that never stopped would have, to the last bit. Runs of one rock that differ only in what is
+done to it once it has settled (its joints) may share the settled scene (``settled_store``)."""
 from __future__ import annotations
 
+import hashlib
+import json
+import os
 from dataclasses import dataclass, fields
-from typing import Any, Callable, Optional
+from typing import Any, Callable, Optional, Sequence
 
 import numpy as np
 from yade import O
@@ -24,7 +28,7 @@ from toppling.run.monitoring import MonitoringPoints
 from toppling.run.progress import Progress
 
 # parameters that may change between a run and its continuation
-FREE = ("resume", "checkpoint_every", "max_tilt", "post_failure_time", "max_wall_time")
+FREE = ("resume", "checkpoint_every", "max_tilt", "post_failure_time", "max_wall_time", "settled_dir")
 ALIGN_EVERY = 10  # chunks between alignments with exact_resume (Checkpoint.align)
 
 
@@ -85,6 +89,19 @@ def fresh_state(inputs: dict[str, Any], layout: columns.ColumnLayout, ids: list[
     return {"inputs": inputs, "layout": vars(layout), "ids": ids, "built": built, "watched": list(bands.values()),
             "watched_columns": list(bands), "tilt": start_tilt, "failure_tilt": None, "reference": list(built),
             "stages": [], "energy": [], "chunks": 0}
+
+
+def settled_store(folder: str, inputs: dict[str, Any], differ_in: Sequence[str]) -> Optional[Checkpoint]:
+    """Where runs whose ``inputs`` are the same apart from ``differ_in`` (what is done to the rock
+    once it has settled, e.g. its joints) and the run's own (``out``, ``description``, FREE) keep
+    their one settled scene: ``<folder>/<digest of the other inputs>``; None without a folder.
+    The scene is as the code that settled it made it: empty the folder when that code changes."""
+    if not folder:
+        return None
+    skip = set(differ_in) | set(FREE) | {"out", "description"}
+    rock = {k: v for k, v in inputs.items() if k not in skip}
+    digest = hashlib.sha1(json.dumps(rock, sort_keys=True, default=str).encode()).hexdigest()[:16]
+    return Checkpoint(os.path.join(folder, digest))
 
 
 class Stopped(Exception):
@@ -169,9 +186,11 @@ class TiltRun:
 
     def __init__(self, protocol: TiltProtocol, criteria: tilting.StageCriteria, checkpoint: Checkpoint,
                  state: dict[str, Any], points: MonitoringPoints, series: paraview.ParaViewSeries,
-                 rmin: float, rmax: float, settled: Optional[Callable[[], None]] = None):
+                 rmin: float, rmax: float, settled: Optional[Callable[[], None]] = None,
+                 store: Optional[Checkpoint] = None):
         self.protocol, self.criteria, self.checkpoint, self.state = protocol, criteria, checkpoint, state
         self.settled = settled  # what the model does once it stands, before the tilt (e.g. a slope's joints)
+        self.store = store  # where the settled scene is kept for the runs that differ only in ``settled``
         self.points, self.series, self.rmin, self.rmax = points, series, rmin, rmax
         self.layout = columns.ColumnLayout(**state["layout"])
         self.off_table = -2 * rmax
@@ -203,16 +222,23 @@ class TiltRun:
         """The kinetic energy of the discs still on the table: a column fallen off it is no longer the slope's."""
         return tilting.kinetic_energy_above(self.ids, self.off_table)
 
-    def save_checkpoint(self, aligned: bool = False) -> None:
-        """Save the run (with exact_resume aligned, Checkpoint.align, unless ``aligned`` already,
-        so that it resumes bit for bit: then called only at moments every run of the same inputs
-        passes, a phase's end or an aligned chunk)."""
+    def save_checkpoint(self, aligned: bool = False, to: Optional[Checkpoint] = None) -> None:
+        """Save the run in its checkpoint (or ``to``; with exact_resume aligned, Checkpoint.align,
+        unless ``aligned`` already, so that it resumes bit for bit: then called only at moments
+        every run of the same inputs passes, a phase's end or an aligned chunk)."""
         if self.protocol.exact_resume and not aligned:
             self.checkpoint.align()
         state = self.state
         state["points"], state["series"], state["wall_time"] = self.points.as_dict(), self.series.state(), self.wall_time()
-        self.checkpoint.save(state)
+        (to or self.checkpoint).save(state)
         self.last_save = self.progress.wall_time
+
+    def keep_settled(self) -> None:
+        """Keep the settled scene in the store. Aligned whatever exact_resume says: the runs that
+        start from the store go on from a scene passed through its serialization, and so does
+        this one, so that every run of the rock goes on from the same bits."""
+        self.checkpoint.align()
+        self.save_checkpoint(aligned=True, to=self.store)
 
     def on_chunk(self) -> None:
         self.state["chunks"] += 1
@@ -375,6 +401,10 @@ class TiltRun:
             limit = " (at max_stage_time: still moving, but less than rest_speed)" if self.at_time_limit(phase) else ""
             print(f"settled at {p.settle_tilt:g} deg: equilibrium after {O.time - phase['start']:.3f} s{limit}", flush=True)
             state["breaks_before_stages"] = {"level": engines.broken_bonds()}
+            phase = self.begin("jointing")
+            if self.store:
+                self.keep_settled()
+        if phase["name"] == "jointing":
             if self.settled:
                 self.settled()
             phase = self.begin("ramp")
@@ -427,7 +457,7 @@ class TiltRun:
         keys = ("tilt", "came_to_rest_after_s", "left_table", "discs_off_table", "breaks", "moved_mm", "phi_deg",
                 "s_over_h", "t_over_h")
         arrested = [{key: stage.get(key) for key in keys} for stage in failed if stage.get("came_to_rest_after_s")]
-        return dict(stopped=self.state.get("stopped"),
+        return dict(stopped=self.state.get("stopped"), settled_from=self.state.get("settled_from"),
                     first_failure_tilt_deg=failed[0]["tilt"] if failed else None, arrested_failures=arrested,
                     breaks_before_stages=self.state.get("breaks_before_stages"),
                     tensile_breaks=modes.count(2), shear_breaks=modes.count(3), discs=len(self.ids),
