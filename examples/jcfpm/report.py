@@ -10,6 +10,9 @@ from toppling.analyse.seeds import fmt
 from toppling.io.reader import read_summaries
 
 
+FAMILIES = "results/equivalent_slope/families"
+
+
 def by_model(runs: dict) -> dict[str, list[dict]]:
     found: dict[str, list[dict]] = {}
     for s in runs.values():
@@ -43,9 +46,11 @@ def column(folder: str) -> None:
 
 
 def slopes(folder: str) -> None:
-    """The tilting table and the equivalent slope, seed by seed (paired), where they have been run."""
-    for case in ("tilting_table", "equivalent_slope"):
-        runs = read_summaries(f"{folder}/{case}")
+    """The tilting table and the equivalent slope, seed by seed (paired), where they have been run;
+    the equivalent slope's ours are the families' base runs (the same settled rock)."""
+    ours_slope = read_summaries(FAMILIES, [f"base_s{seed}" for seed in (1, 2, 3)])
+    for case, also in (("tilting_table", {}), ("equivalent_slope", ours_slope)):
+        runs = {**read_summaries(f"{folder}/{case}"), **also}
         if not runs:
             continue
         print(f"\n{case}:\n\n| seed | model | fails at (°) | φ (°) | S/H | T/H | stable columns | breaks | wall time (s) |\n"

@@ -30,7 +30,6 @@ from toppling.io import output
 from toppling.io.params import check
 from toppling.load import tilting
 from toppling.models import incline
-from toppling.run.steps import check_stable, run_steps
 
 readParamsFromTable(**params.TABLE_4_6, rmax=0.008, smooth=1, duration=0.6, seed=1, model="ours",
                     out="results/block_on_incline", noTableOk=True)
@@ -43,18 +42,7 @@ setup = incline.build(table.b, table.h, table.rmax / params.PACKING_R_RATIO, tab
 jcfpm.use(table.model)  # ours, or the same scene in JCFpm (examples/jcfpm)
 tilting.set_tilt(table.alpha)
 a, t_tilt = math.radians(table.alpha), O.time
-x_start, history = O.bodies[setup.toe].state.pos[0], []
-
-
-def failed(record):
-    _, translation, rotation = record
-    return abs(rotation) > 30 or translation > table.b
-
-
-while O.time < table.duration and not (history and failed(history[-1])):
-    run_steps(200)
-    history.append((O.time, incline.toe_translation(setup, x_start), incline.mean_spin_deg(setup.block)))
-    check_stable()
+history = incline.run_to_mode(setup, table.duration)
 
 _, translation, rotation = history[-1]
 mode = incline.mode(translation, rotation, table.b)

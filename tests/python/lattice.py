@@ -38,21 +38,6 @@ def bonded_lattice(rows, cols, mat, gravity=(0, 0, 0), fixed_bottom=False, gap=0
     return ids
 
 
-def leapfrog_energy(law) -> float:
-    """Total energy at the current positions, measured over one step.
-
-    YADE integrates with leapfrog: velocities live at half steps. The energy leapfrog conserves
-    for linear springs uses the product of the velocities before and after the positions,
-    sum(m v(t-dt/2).v(t+dt/2))/2; after the step the law's forces belong to those positions.
-    """
-    dynamic = [b for b in O.bodies if b.dynamic]
-    before = [(tuple(b.state.vel), b.state.angVel[2]) for b in dynamic]  # copies: state.vel is a live view
-    O.step()
-    kinetic = sum(0.5 * b.state.mass * sum(x * y for x, y in zip(v, b.state.vel))
-                  + 0.5 * b.state.inertia[2] * w * b.state.angVel[2] for b, (v, w) in zip(dynamic, before))
-    return kinetic + law.elasticEnergy()
-
-
 def pull_until_broken(body_id: int) -> float:
     """Pull disc ``body_id`` off along +y until a bond breaks; the time of the step that broke it."""
     boundary.move([body_id], (0, 0.01))

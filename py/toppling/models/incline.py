@@ -8,13 +8,14 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import Callable, Optional
 
 from yade import O
 from yade.wrapper import JointSetGeometry, ParallelBondMat, SmoothJointMat
 
 from toppling.build import bonding, engines, geometry, joints, packing
 from toppling.build.discs import disc
-from toppling.run.steps import run_steps, steps_in
+from toppling.run.steps import check_stable, run_steps, steps_in
 
 
 @dataclass
@@ -88,3 +89,20 @@ def mode(translation: float, rotation_deg: float, b: float) -> str:
     topple if it turned more than 5°, both, or stable."""
     slides, topples = translation > 0.1 * b, abs(rotation_deg) > 5.0
     return "slide+topple" if slides and topples else "slide" if slides else "topple" if topples else "stable"
+
+
+def run_to_mode(setup: BlockOnBase, duration: float, every: int = 200,
+                on_chunk: Optional[Callable[[], None]] = None) -> list[tuple[float, float, float]]:
+    """Run the tilted block until it has clearly failed (turned more than 30° or its toe moved
+    further than b; judged as it starts: once toppled over, its toe skids too) or for
+    ``duration`` [s]. Returns (time, toe translation [m], mean rotation [deg]) every ``every``
+    steps, after ``on_chunk()`` (e.g. a measurement); stops with check_stable's message if the
+    run went unstable."""
+    x_start, start, history = O.bodies[setup.toe].state.pos[0], O.time, []
+    while O.time - start < duration and not (history and (abs(history[-1][2]) > 30 or history[-1][1] > setup.b)):
+        run_steps(every)
+        if on_chunk:
+            on_chunk()
+        history.append((O.time, toe_translation(setup, x_start), mean_spin_deg(setup.block)))
+        check_stable()
+    return history
