@@ -78,7 +78,6 @@ TILTING_TABLE_IDEAL = dict(
     base_joint_friction=0.0, joint_stiffness_scale=0.01, bond_gap=0.0, cut_rules=1, joint_pieces=1, z_order=0,
     disc_path=1,  # 1: DiscInteractionLoop, DiscNewtonIntegrator; 0: YADE's generic engines (the same results)
     model="ours",  # 'jcfpm': the same scene in YADE's JCFpm (docs/jcfpm.md)
-    settled_dir="",  # a folder: runs that differ only in joints or laws share the settled rock kept there
     timestep_safety=0.8, damping=0.0, settle_damping=0.7,  # local damping while tilting, on the level table
     start_tilt=26.0, step=2.0, max_tilt=45.0, tilt_rate=50.0, stage_rate=10.0,  # deg, deg, deg, deg/s, deg/s
     chunk=0.02, rest_speed=1e-3, fail_displacement=0.05, max_stage_time=2.0, fail_columns=2,  # s, m/s, m, s, -
