@@ -12,9 +12,9 @@ from examples import params
 from toppling.analyse.seeds import fmt
 from toppling.io.reader import read_summaries
 
-# rest_window only decides how soon a standing run is seen at rest
+# rest_window only decides how soon a standing run is seen at rest; settled_dir where its settling was done
 RUN_ONLY = ("out", "resume", "checkpoint_every", "max_wall_time", "post_failure_time", "seed", "exact_resume",
-            "rest_window")
+            "rest_window", "settled_dir")
 # figure: (target, half-width of its band) — §5.3.2 and Fig 5-19
 TARGETS = {"phi_overall_deg": (15.0, 3.0), "s_over_h": (0.79, 0.10), "t_over_h": (0.20, 0.10),
            "stable_first": (9, 1), "stable_last": (13, 1)}

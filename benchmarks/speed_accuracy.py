@@ -1,0 +1,152 @@
+"""Speed against accuracy: what a run costs at each packing size, and how far its answer lies
+from the finest packing's (docs/performance.md).
+
+The tilting table's ideal model and the equivalent slope's base model, each at column width /
+Rmax from 5 to 25 (the radii ratio of the thesis' packing: 2.5 for the tilting table, §5.2.3;
+the base model's 2.33), plus the tilting table's calibrated default (R 1-4 mm), 5 packing seeds
+each; every other parameter the example's default.
+
+    source scripts/env.sh; /usr/bin/python3 benchmarks/speed_accuracy.py tables   # the two batch tables
+    ./toppling-sweep benchmarks/speed_accuracy_tilting_table.table examples/tilting_table/run.py
+    ./toppling-sweep benchmarks/speed_accuracy_equivalent_slope.table examples/equivalent_slope/run.py
+    source scripts/env.sh; /usr/bin/python3 benchmarks/speed_accuracy.py report   # Markdown, CSV, charts
+The report uses the runs done so far; results/speed_accuracy/<model>.csv and .png.
+"""
+import csv
+import os
+import statistics
+import sys
+
+from examples import params
+from toppling.io import output
+from toppling.io.reader import read_summaries
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+RESULTS = "results/speed_accuracy"
+SEEDS = (1, 2, 3, 4, 5)
+# model: (column width [m], Rmax / Rmin, width / Rmax of the sizes, the thesis' size, extra sizes (Rmin, Rmax))
+MODELS = {
+    "tilting_table": (params.TILTING_TABLE_OUTLINE["width"], params.PACKING_R_RATIO, (5, 9, 14, 20, 25), 20,
+                      [(params.TILTING_TABLE_IDEAL["rmin"], params.TILTING_TABLE_IDEAL["rmax"])]),
+    "equivalent_slope": (params.EQUIVALENT_SLOPE_SHAPE["spacing"],
+                         params.EQUIVALENT_SLOPE["rmax"] / params.EQUIVALENT_SLOPE["rmin"],
+                         (5, 9, params.EQUIVALENT_SLOPE_SHAPE["spacing"] / params.EQUIVALENT_SLOPE["rmax"], 20, 25),
+                         params.EQUIVALENT_SLOPE_SHAPE["spacing"] / params.EQUIVALENT_SLOPE["rmax"], []),
+}
+# the answers compared, by model: summary key, label
+ANSWERS = {"tilting_table": [("failure_tilt_deg", "failure tilt (°)"), ("phi_overall_deg", "φ overall (°)"),
+                             ("s_over_h", "S/H")],
+           "equivalent_slope": [("failed", "fails (fraction of seeds)"), ("phi_overall_deg", "φ overall (°)"),
+                                ("s_over_h", "S/H"), ("t_over_h", "T/H")]}
+
+
+def sizes(model: str) -> list[tuple[float, float]]:
+    """(rmin, rmax) [m] of the model's packings, coarse to fine."""
+    width, ratio, per_width, _, extra = MODELS[model]
+    found = [(round(width / w / ratio, 6), round(width / w, 6)) for w in per_width] + extra
+    return sorted(found, key=lambda r: -r[1])
+
+
+def write_tables() -> None:
+    """One line per size and seed, size by size from the coarsest (a sweep stopped part way has the cheap sizes)."""
+    for model in MODELS:
+        rows = [["description", "seed", "rmin", "rmax", "out"]]
+        for rmin, rmax in sizes(model):
+            for seed in SEEDS:
+                name = f"r{1e3 * rmin:g}-{1e3 * rmax:g}_s{seed}"
+                rows.append([name, str(seed), repr(rmin), repr(rmax), f"'{RESULTS}/{model}/{name}'"])
+        width = [max(len(r[k]) for r in rows) for k in range(len(rows[0]))]
+        with open(f"{HERE}/speed_accuracy_{model}.table", "w") as f:
+            f.write(f"# Written by benchmarks/speed_accuracy.py tables; run with\n#   ./toppling-sweep "
+                    f"benchmarks/speed_accuracy_{model}.table examples/{model}/run.py\n")
+            for row in rows:
+                f.write(" ".join(c.ljust(w) for c, w in zip(row, width)).rstrip() + "\n")
+
+
+def value(summary: dict, key: str):
+    v = summary.get(key)
+    return float(bool(v)) if key == "failed" else v
+
+
+def by_size(model: str) -> list[dict]:
+    """Per size (coarse to fine): the runs' cost and each answer's values."""
+    runs = read_summaries(f"{RESULTS}/{model}")
+    found = []
+    for rmin, rmax in sizes(model):
+        mine = [s for s in runs.values() if (s["inputs"]["rmin"], s["inputs"]["rmax"]) == (rmin, rmax)]
+        if not mine:
+            continue
+        row = {"rmin": rmin, "rmax": rmax, "width_over_rmax": MODELS[model][0] / rmax, "runs": len(mine),
+               "discs": statistics.mean(s["discs"] for s in mine), "steps": statistics.mean(s["steps"] for s in mine),
+               "wall_time": statistics.mean(s["wall_time"] for s in mine)}
+        for key, _ in ANSWERS[model]:
+            row[key] = [v for s in mine if (v := value(s, key)) is not None]
+        found.append(row)
+    return found
+
+
+def spread(values: list[float]) -> tuple[float, float]:
+    return statistics.mean(values), statistics.stdev(values) if len(values) > 1 else 0.0
+
+
+def report(model: str) -> None:
+    rows = by_size(model)
+    if not rows:
+        print(f"{model}: no runs in {RESULTS}/{model}")
+        return
+    finest = rows[-1]
+    answers = ANSWERS[model]
+    print(f"\n{model} (finest: R {1e3 * finest['rmin']:g}-{1e3 * finest['rmax']:g} mm; shift = mean − finest's mean)\n")
+    print("| R (mm) | width / Rmax | runs | discs | steps | wall (s) | " + " | ".join(f"{label}: mean ± sd, shift"
+                                                                            for _, label in answers) + " |")
+    print("|---|---|---|---|---|---|" + "---|" * len(answers))
+    table = []
+    for row in rows:
+        cells = []
+        for key, _ in answers:
+            if row[key] and finest[key]:
+                (m, sd), (m0, _) = spread(row[key]), spread(finest[key])
+                cells.append(f"{m:.2f} ± {sd:.2f}, {m - m0:+.2f}")
+                row[f"{key}_mean"], row[f"{key}_sd"], row[f"{key}_shift"] = m, sd, m - m0
+            else:
+                cells.append("-")
+        print(f"| {1e3 * row['rmin']:g}–{1e3 * row['rmax']:g} | {row['width_over_rmax']:.1f} | {row['runs']} | "
+              f"{row['discs']:.0f} | {row['steps']:.0f} | {row['wall_time']:.0f} | " + " | ".join(cells) + " |")
+        table.append({k: v for k, v in row.items() if not isinstance(v, list)})
+    with open(f"{output.output_dir(RESULTS)}/{model}.csv", "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=sorted({k for r in table for k in r}))
+        w.writeheader()
+        w.writerows(table)
+    chart(model, rows)
+
+
+def chart(model: str, rows: list[dict]) -> None:
+    """Cost (x, log) against each answer's shift from the finest (y), the seed spread as a band."""
+    answers = ANSWERS[model]
+    fig, axes = output.plt.subplots(1, len(answers), figsize=(4 * len(answers), 3.6))
+    thesis = MODELS[model][3]
+    for ax, (key, label) in zip(axes, answers):
+        shown = [r for r in rows if f"{key}_shift" in r]
+        x = [r["wall_time"] for r in shown]
+        y = [r[f"{key}_shift"] for r in shown]
+        sd = [r[f"{key}_sd"] for r in shown]
+        ax.fill_between(x, [a - b for a, b in zip(y, sd)], [a + b for a, b in zip(y, sd)], alpha=0.25,
+                        label="± seed sd")
+        ax.plot(x, y, "o-", label="mean − finest's")
+        for r in shown:
+            ax.annotate(f"{r['width_over_rmax']:.0f}", (r["wall_time"], r[f"{key}_shift"]), fontsize=7)
+            if abs(r["width_over_rmax"] - thesis) < 0.5:
+                ax.plot(r["wall_time"], r[f"{key}_shift"], "r*", markersize=12, label="thesis' resolution")
+        ax.axhline(0, color="grey", lw=0.5)
+        ax.set(xscale="log", xlabel="wall time per run (s, one core)", ylabel=f"shift of {label}")
+    axes[0].legend(fontsize=7)
+    fig.suptitle(f"{model}: cost against answer (labels: column width / Rmax)")
+    output.save_figure(fig, RESULTS, model)
+
+
+if __name__ == "__main__":
+    if sys.argv[1:] == ["tables"]:
+        write_tables()
+    else:
+        for name in MODELS:
+            report(name)
