@@ -72,6 +72,9 @@ void Ip2_ParallelBondMat_ParallelBondMat_ParallelBondPhys::go(
         const shared_ptr<Material>& m1, const shared_ptr<Material>& m2, const shared_ptr<Interaction>& interaction)
 {
 	if (interaction->phys) return;
+	// Called from outside the loop (utils.createInteraction, as installing joints does), the
+	// dispatcher hands on the scene it last ran in: after O.load that one is gone.
+	scene            = Omega::instance().getScene().get();
 	const auto* mat1 = YADE_CAST<ParallelBondMat*>(m1.get());
 	const auto* mat2 = YADE_CAST<ParallelBondMat*>(m2.get());
 	try {

@@ -17,10 +17,12 @@ ROWS_SLAB, ROWS_BLOCK, COLS = 3, 5, 24
 Y_JOINT = math.sqrt(3) * R * (ROWS_SLAB - 0.5)  # between the slab's top row and the block's bottom row
 
 
-def block_on_slab(friction_deg: float, smooth: bool = True, segment: bool = False, pieces: bool = True):
+def block_on_slab(friction_deg: float, smooth: bool = True, segment: bool = False, pieces: bool = True,
+                  loaded: bool = False):
     """Fixed slab of discs, bonded block of discs on it, a horizontal joint between: a smooth
     joint (persistent, or with ``segment`` one explicit segment), or (smooth=False) plain disc
-    contacts of the same friction."""
+    contacts of the same friction. ``loaded``: the bonded scene saved and loaded before the
+    joint is installed (as from a checkpoint or a shared settled rock)."""
     rock = material(frictionAngle=math.radians(30 if smooth else friction_deg))
     block = []
     for j in range(ROWS_SLAB + ROWS_BLOCK):
@@ -37,6 +39,9 @@ def block_on_slab(friction_deg: float, smooth: bool = True, segment: bool = Fals
         run_steps(2000)
         return block, None
     bonding.bond_within_gap(1e-6 * R)
+    if loaded:
+        O.saveTmp("bonded")
+        O.loadTmp("bonded")
     joint = (JointSetGeometry(dip=0, segmentStarts=[(-R, Y_JOINT)], segmentEnds=[(2 * R * COLS, Y_JOINT)])
              if segment else JointSetGeometry(origin=(0, Y_JOINT), dip=0))
     mechanics = SmoothJointMat(normalStiffness=rock.bondYoung / (2 * R),
@@ -75,6 +80,14 @@ def test_joint_pairs_lose_their_bonds(empty_scene):
         phys = O.interactions[i, j].phys
         assert type(phys).__name__ == "SmoothJointPhys"
         assert phys.jointNormal[1] == pytest.approx(1.0)
+
+
+def test_joints_are_installed_in_a_scene_just_loaded(empty_scene):
+    """The joint pairs are made outside the interaction loop, which has not run in the loaded scene."""
+    block, system = block_on_slab(friction_deg=20, loaded=True)
+    assert len(system.pairId1) == 2 * 8
+    assert all(type(O.interactions[i, j].phys).__name__ == "SmoothJointPhys"
+               for i, j in zip(system.pairId1, system.pairId2))
 
 
 def test_without_smooth_joint_coarse_discs_interlock(empty_scene):
