@@ -8,7 +8,7 @@ instability detector; its message kept), "nan" (a position not finite: must neve
 "drift" (the mechanical energy rose more than 1 % of the block's m g h above its start: damping,
 friction and breaks only lower it), "answer" (a mode other than the thesis' topple), "ok".
 
-``interlock``: §4.4's block sliding on a frictionless incline (b 0.2 m, h 0.1 m, 15°),
+``interlock``: §4.4's block sliding on a frictionless incline (b = h = 0.2 m, 15°: it cannot topple),
 across a smooth joint or plain disc contacts, at block width / Rmax 3 ... 20, 5 packings
 each (porosity 0.25: 0.2 cannot be packed at 3 without locked-in stress): right if it slides
 at g sin α within 10 %; coarse discs across plain contacts interlock.
@@ -79,14 +79,18 @@ def timestep_cell(safety: float, joint_scale: float, damping: str) -> dict:
 
 
 def interlock_cell(width: float, smooth: bool, seed: int) -> dict:
-    b, h, alpha = 0.2, 0.1, 15.0
+    b, h, alpha = 0.2, 0.2, 15.0
     O.reset()
-    setup = block(b, h, alpha, 0.0, b / width, seed=seed, smooth=smooth, porosity=0.25)  # the packer's limit at 3
+    row = dict(width_over_rmax=width, smooth=int(smooth), seed=seed)
+    try:
+        setup = block(b, h, alpha, 0.0, b / width, seed=seed, smooth=smooth, porosity=0.25)  # the packer's limit at 3
+    except ValueError as e:  # too few discs to make a block
+        return dict(row, block_discs=0, mode=str(e), acceleration_ratio=float("nan"), steps=0, right=0)
     history = incline.run_to_mode(setup, 0.5)
     t, x, spin = history[-1]
     expected = engines.G * math.sin(math.radians(alpha))
-    row = dict(width_over_rmax=width, smooth=int(smooth), seed=seed, discs=len(setup.block) + len(setup.base),
-               mode=incline.mode(x, spin, b), acceleration_ratio=2 * x / t**2 / expected, steps=O.iter)
+    row.update(block_discs=len(setup.block), mode=incline.mode(x, spin, b), acceleration_ratio=2 * x / t**2 / expected,
+               steps=O.iter)
     row["right"] = int(row["mode"] == "slide" and abs(row["acceleration_ratio"] - 1) < 0.1)
     return row
 
@@ -120,19 +124,23 @@ def timestep_map(rows: list[dict]) -> None:
 
 
 def interlock_chart(rows: list[dict]) -> None:
-    fig, ax = output.figure("block width / Rmax", "packings right (of 5)", "Sliding block, frictionless joint")
-    print("| width / Rmax | smooth joint: right | a / g sin α | plain contacts: right | a / g sin α |\n|---|---|---|---|---|")
+    fig, ax = output.figure("block width / Rmax", f"packings right (of {len(SEEDS)})", "Sliding block, frictionless joint")
     for smooth in (1, 0):
         right = [sum(r["right"] for r in rows if r["width_over_rmax"] == w and r["smooth"] == smooth) for w in WIDTHS]
         ax.plot(WIDTHS, right, "o-", label="smooth joint" if smooth else "plain contacts")
     ax.legend()
     output.save_figure(fig, OUT, "interlock")
+    print("| width / Rmax | block discs | smooth joint: right | a / g sin α | plain contacts: right | a / g sin α |\n"
+          "|---|---|---|---|---|---|")
     for w in WIDTHS:
-        cells = []
+        built = [r for r in rows if r["width_over_rmax"] == w and r["block_discs"]]
+        cells = [f"{np.mean([r['block_discs'] for r in built]):.0f}" if built else "-"]
         for smooth in (1, 0):
-            mine = [r for r in rows if r["width_over_rmax"] == w and r["smooth"] == smooth]
+            mine = [r for r in built if r["smooth"] == smooth]
             ratios = [r["acceleration_ratio"] for r in mine]
-            cells += [str(sum(r["right"] for r in mine)), f"{np.mean(ratios):.3f} ± {np.std(ratios, ddof=1):.3f}"]
+            spread = f"{np.mean(ratios):.3f} ± {np.std(ratios, ddof=1):.3f}" if len(ratios) > 1 else "-"
+            no_block = len(SEEDS) - len(mine)
+            cells += [f"{sum(r['right'] for r in mine)}" + (f" ({no_block} no block)" if no_block else ""), spread]
         print(f"| {w} | " + " | ".join(cells) + " |")
 
 

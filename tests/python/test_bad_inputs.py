@@ -17,7 +17,7 @@ from toppling.build import bonding, boundary, columns, engines, joints, packing
 from toppling.build.discs import disc
 from toppling.io.params import check
 from toppling.load import tilting
-from toppling.models import equivalent_slope
+from toppling.models import equivalent_slope, incline
 from toppling.run import tilt_run
 from toppling.run.checkpoint import Checkpoint
 from toppling.run.steps import run_checked, run_steps
@@ -160,6 +160,8 @@ BAD = [  # label, the call, what the error says
      "alpha = 'steep' is invalid: it must be a number in [0, 90)"),
     ("example parameter not whole", lambda: check(SimpleNamespace(discs=2.5), discs="whole [2, inf)"),
      "discs = 2.5 is invalid: it must be a whole number in [2, inf)"),
+    ("discs too large for the block", lambda: incline.build(0.2, 0.2, 0.2 / 3 / 2.5, 0.2 / 3, ROCK, 0.0, porosity=0.25),
+     "rmax = 0.0666667 is too large for a 0.2 x 0.2 m block: no disc of it is bonded to another"),
 ]
 
 

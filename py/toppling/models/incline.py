@@ -50,6 +50,9 @@ def build(b: float, h: float, rmin: float, rmax: float, rock: dict, joint_fricti
     O.engines = engines.engines(gravity=(0, -engines.G, 0), local_damping=0.0)
     floaters = set(bonding.remove_floaters(bond_gap * rmin, ids=block))
     block = [i for i in block if i not in floaters]
+    if not block:
+        raise ValueError(f"rmax = {rmax:g} is too large for a {b:g} x {h:g} m block: no disc of it is bonded to "
+                         "another (it must be small enough for the block to be a piece of bonded discs)")
     bonding.bond_within_gap(bond_gap * rmin)  # also which pairs across the joint get a joint contact
     interface, box = JointSetGeometry(origin=(0, 0), dip=0), ((-1, -1), (width + 1, h + 1))
     if smooth:
