@@ -10,8 +10,10 @@ friction and breaks only lower it), "answer" (a mode other than the thesis' topp
 
 ``interlock``: §4.4's block sliding on a frictionless incline (b = h = 0.2 m, 15°: it cannot topple),
 across a smooth joint or plain disc contacts, at block width / Rmax 3 ... 20, 5 packings
-each (porosity 0.25: 0.2 cannot be packed at 3 without locked-in stress): right if it slides
-at g sin α within 10 %; coarse discs across plain contacts interlock.
+each, porosity 0.25 (0.2 cannot be packed at 3 without locked-in stress) and bonds within 0.5
+Rmin (within 0.05, the default, most coarse discs of so loose a packing stay unbonded and the
+"block" is a few loose pieces): right if it slides at g sin α within 10 % without turning (5°,
+the discs' mean rotation); coarse discs across plain contacts interlock.
 
     ./yade -x -n -j1 benchmarks/stability.py [timestep|interlock]   # both by default
 Writes results/stability/<study>.csv and .png and prints a Markdown table.
@@ -38,12 +40,13 @@ WIDTHS = (3, 4, 6, 8, 12, 16, 20)  # block width / Rmax
 SEEDS = (1, 2, 3, 4, 5)
 
 
-def block(b, h, alpha, phi, rmax, seed=1, smooth=True, joint_scale=1.0, damping="contact", porosity=0.2):
+def block(b, h, alpha, phi, rmax, seed=1, smooth=True, joint_scale=1.0, damping="contact", porosity=0.2,
+          bond_gap=incline.BOND_GAP):
     """Table 5-6's rock with the chosen dashpots, tilted to ``alpha``; the scene's block."""
     contact, bond, local = DAMPING[damping]
     rock = {**params.TABLE_5_6_ROCK, "normalDamping": contact, "bondNormalDamping": bond}
     setup = incline.build(b, h, rmax / params.PACKING_R_RATIO, rmax, rock, phi, smooth=smooth, seed=seed,
-                          joint_stiffness_scale=joint_scale, porosity=porosity)
+                          joint_stiffness_scale=joint_scale, porosity=porosity, bond_gap=bond_gap)
     engines.set_local_damping(local)
     tilting.set_tilt(alpha)
     return setup
@@ -83,7 +86,7 @@ def interlock_cell(width: float, smooth: bool, seed: int) -> dict:
     O.reset()
     row = dict(width_over_rmax=width, smooth=int(smooth), seed=seed)
     try:
-        setup = block(b, h, alpha, 0.0, b / width, seed=seed, smooth=smooth, porosity=0.25)  # the packer's limit at 3
+        setup = block(b, h, alpha, 0.0, b / width, seed=seed, smooth=smooth, porosity=0.25, bond_gap=0.5)
     except ValueError as e:  # too few discs to make a block
         return dict(row, block_discs=0, mode=str(e), acceleration_ratio=float("nan"), steps=0, right=0)
     history = incline.run_to_mode(setup, 0.5)

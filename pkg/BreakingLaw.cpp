@@ -46,8 +46,8 @@ void BreakingLaw::reportInstability(const Interaction& I)
 		                  << " moved more than a tenth of a radius relative to each other in one step, "
 		                     "or their force is not finite, at iteration "
 		                  << scene->iter
-		                  << ": the run is unstable and was stopped. Lower O.dt (or use GlobalStiffnessTimeStepper with "
-		                     "timestepSafetyCoefficient < 1) or raise the damping.");
+		                  << ": the run is unstable and was stopped. Lower O.dt (or GlobalStiffnessTimeStepper's "
+		                     "timestepSafetyCoefficient, <= 1); damping does not help: dashpots lower the stable step.");
 	}
 }
 

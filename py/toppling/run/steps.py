@@ -49,5 +49,5 @@ def check_stable(what: str = "the run") -> None:
         except LookupError:  # a scene of another model (JCFpm) has no such check
             continue
         if law.unstable:
-            raise RuntimeError(f"{what} went unstable: lower the time-step safety (engines.engines(safety=...)) "
-                               "or raise the damping")
+            raise RuntimeError(f"{what} went unstable: lower the time-step safety (engines.engines(safety=...)); "
+                               "damping does not help: dashpots lower the stable step (docs/performance.md)")
