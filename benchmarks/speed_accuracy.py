@@ -78,7 +78,8 @@ def by_size(model: str) -> list[dict]:
             continue
         row = {"rmin": rmin, "rmax": rmax, "width_over_rmax": MODELS[model][0] / rmax, "runs": len(mine),
                "discs": statistics.mean(s["discs"] for s in mine), "steps": statistics.mean(s["steps"] for s in mine),
-               "wall_time": statistics.mean(s["wall_time"] for s in mine)}
+               "wall_time": statistics.mean(s["wall_time"] for s in mine),
+               "first_stage": sum(bool(s.get("failed_in_first_stage")) for s in mine)}  # a failure tilt at most that
         for key, _ in ANSWERS[model]:
             row[key] = [v for s in mine if (v := value(s, key)) is not None]
         found.append(row)
@@ -97,7 +98,7 @@ def report(model: str) -> None:
     finest = rows[-1]
     answers = ANSWERS[model]
     print(f"\n{model} (finest: R {1e3 * finest['rmin']:g}-{1e3 * finest['rmax']:g} mm; shift = mean − finest's mean)\n")
-    print("| R (mm) | width / Rmax | runs | discs | steps | wall (s) | " + " | ".join(f"{label}: mean ± sd, shift"
+    print("| R (mm) | width / Rmax | runs (failed in the first stage) | discs | steps | wall (s) | " + " | ".join(f"{label}: mean ± sd, shift"
                                                                             for _, label in answers) + " |")
     print("|---|---|---|---|---|---|" + "---|" * len(answers))
     table = []
@@ -110,7 +111,8 @@ def report(model: str) -> None:
                 row[f"{key}_mean"], row[f"{key}_sd"], row[f"{key}_shift"] = m, sd, m - m0
             else:
                 cells.append("-")
-        print(f"| {1e3 * row['rmin']:g}–{1e3 * row['rmax']:g} | {row['width_over_rmax']:.1f} | {row['runs']} | "
+        print(f"| {1e3 * row['rmin']:g}–{1e3 * row['rmax']:g} | {row['width_over_rmax']:.1f} | {row['runs']} "
+              f"({row['first_stage']}) | "
               f"{row['discs']:.0f} | {row['steps']:.0f} | {row['wall_time']:.0f} | " + " | ".join(cells) + " |")
         table.append({k: v for k, v in row.items() if not isinstance(v, list)})
     with open(f"{output.output_dir(RESULTS)}/{model}.csv", "w", newline="") as f:
