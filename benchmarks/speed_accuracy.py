@@ -98,7 +98,9 @@ def report(model: str) -> None:
     finest = rows[-1]
     answers = ANSWERS[model]
     print(f"\n{model} (finest: R {1e3 * finest['rmin']:g}-{1e3 * finest['rmax']:g} mm; shift = mean − finest's mean)\n")
-    print("| R (mm) | width / Rmax | runs (failed in the first stage) | discs | steps | wall (s) | " + " | ".join(f"{label}: mean ± sd, shift"
+    staged = any(key == "failure_tilt_deg" for key, _ in answers)  # a slope run at one tilt has one stage
+    runs = "runs (failed in the first stage)" if staged else "runs"
+    print(f"| R (mm) | width / Rmax | {runs} | discs | steps | wall (s) | " + " | ".join(f"{label}: mean ± sd, shift"
                                                                             for _, label in answers) + " |")
     print("|---|---|---|---|---|---|" + "---|" * len(answers))
     table = []
@@ -111,8 +113,8 @@ def report(model: str) -> None:
                 row[f"{key}_mean"], row[f"{key}_sd"], row[f"{key}_shift"] = m, sd, m - m0
             else:
                 cells.append("-")
-        print(f"| {1e3 * row['rmin']:g}–{1e3 * row['rmax']:g} | {row['width_over_rmax']:.1f} | {row['runs']} "
-              f"({row['first_stage']}) | "
+        first = f" ({row['first_stage']})" if staged else ""
+        print(f"| {1e3 * row['rmin']:g}–{1e3 * row['rmax']:g} | {row['width_over_rmax']:.1f} | {row['runs']}{first} | "
               f"{row['discs']:.0f} | {row['steps']:.0f} | {row['wall_time']:.0f} | " + " | ".join(cells) + " |")
         table.append({k: v for k, v in row.items() if not isinstance(v, list)})
     with open(f"{output.output_dir(RESULTS)}/{model}.csv", "w", newline="") as f:
