@@ -16,7 +16,6 @@ class Checkpoint:
     TAG = "toppling.checkpoint"
 
     def __init__(self, folder: str):
-        os.makedirs(folder, exist_ok=True)
         self.scene_path = os.path.join(folder, "checkpoint.yade.bz2")
         self.state_path = os.path.join(folder, "checkpoint.json")
 
@@ -27,6 +26,7 @@ class Checkpoint:
         # Written aside and moved into place in one rename: a run killed while saving (a long run
         # is stopped at any moment) leaves the previous checkpoint whole; aside under the process'
         # own name, as runs sharing a settled scene may save the same one at once.
+        os.makedirs(os.path.dirname(self.scene_path), exist_ok=True)
         text = json.dumps(state)
         O.tags[self.TAG] = text
         scene_tmp = self.scene_path.replace("checkpoint.", f"checkpoint.saving-{os.getpid()}.")
