@@ -24,6 +24,7 @@ import sys
 
 import numpy as np
 from yade import O
+from yade.wrapper import GlobalStiffnessTimeStepper
 
 from examples import params
 from toppling.analyse import energy
@@ -54,7 +55,7 @@ def block(b, h, alpha, phi, rmax, seed=1, smooth=True, joint_scale=1.0, damping=
 
 def set_safety(safety: float) -> float:
     """The time stepper's coefficient, beyond the (0, 1] engines.engines allows; dt / the law's estimate."""
-    stepper = next(e for e in O.engines if type(e).__name__ == "GlobalStiffnessTimeStepper")
+    stepper = next(e for e in O.engines if isinstance(e, GlobalStiffnessTimeStepper))
     estimate = engines.bond_law().criticalTimeStep()
     stepper.timestepSafetyCoefficient, stepper.defaultDt, stepper.previousDt = safety, safety * estimate, safety * estimate
     O.dt = safety * estimate

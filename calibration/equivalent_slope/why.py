@@ -15,6 +15,7 @@ from collections import Counter
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
 
+from toppling.analyse.seeds import fmt
 from toppling.build.columns import ColumnLayout
 from toppling.io.reader import summary_of
 
@@ -37,18 +38,19 @@ def cracks_by_column(run: str, layout: ColumnLayout) -> dict[int, Counter]:
     return found
 
 
-def describe(run: str) -> tuple[dict, dict[int, Counter], ColumnLayout]:
+def describe(run: str) -> tuple[dict, dict[int, Counter]]:
+    """The run's summary and its cracks by column (its layout from the checkpoint's state)."""
     with open(os.path.join(run, "checkpoint.json")) as f:
         layout = ColumnLayout(**json.load(f)["layout"])
-    return summary_of(run), cracks_by_column(run, layout), layout
+    return summary_of(run), cracks_by_column(run, layout)
 
 
 def main(case: str, base: str) -> None:
-    (mine, my_cracks, layout), (theirs, their_cracks, _) = describe(case), describe(base)
+    (mine, my_cracks), (theirs, their_cracks) = describe(case), describe(base)
     print(f"{os.path.basename(case)} beside {os.path.basename(base)}: failed {mine['failed']} / {theirs['failed']}, "
           f"φ {mine.get('phi_overall_deg')} / {theirs.get('phi_overall_deg')}\n")
     print("| column | zone | base's zone | cracks t / s | base's | top moved (mm) | base's |\n|---|---|---|---|---|---|---|")
-    labels = list((mine.get("zones") or theirs.get("zones") or {}).keys()) or [f"{k}" for k in range(1, len(layout.heights) + 1)]
+    labels = list(mine.get("zones") or mine.get("top_displacement_mm") or theirs.get("zones") or {})  # A-1, B-2, ...
     for k, label in enumerate(labels, start=1):
         cells = []
         for s, cracks in ((mine, my_cracks), (theirs, their_cracks)):
@@ -57,7 +59,6 @@ def main(case: str, base: str) -> None:
                           (s.get("top_displacement_mm") or {}).get(label)))
         (zone, cracks, top), (base_zone, base_cracks, base_top) = cells
         if (zone, cracks) != (base_zone, base_cracks):
-            fmt = lambda v: "-" if v is None else f"{v:.1f}"  # noqa: E731
             print(f"| {label} | {zone} | {base_zone} | {cracks} | {base_cracks} | {fmt(top)} | {fmt(base_top)} |")
     foundation = my_cracks.get(0, Counter()), their_cracks.get(0, Counter())
     print(f"\nfoundation cracks t / s: {foundation[0]['tensile']} / {foundation[0]['shear']} "
