@@ -32,6 +32,10 @@ namespace toppling {
 	// c = 2 beta sqrt(m k).
 	inline Real dashpotCoefficient(Real beta, Real mass, Real k) { return 2 * beta * math::sqrt(mass * k); }
 
+	// How many bodies or pairs ahead the disc path asks for the memory it will read: enough to
+	// cover a load from memory with the work of the ones between.
+	constexpr long prefetchAhead = 8;
+
 	// What a law reads of a body's motion: a copy of its State's (the disc path gathers them for
 	// every body once per step, contiguous, rather than from every pair's two State objects).
 	struct Kinematics {
@@ -115,6 +119,14 @@ namespace toppling {
 			force[t][id2] += -f;
 			torque[t][id1] += t1;
 			torque[t][id2] += t2;
+		}
+		// The sums' entries of a pair soon to be added to, fetched ahead (their order in memory is
+		// the bodies', not the pairs').
+		void prefetchPair(Body::id_t id1, Body::id_t id2) const
+		{
+			const int t = thread();
+			__builtin_prefetch(&force[t][id1], 1), __builtin_prefetch(&force[t][id2], 1);
+			__builtin_prefetch(&torque[t][id1], 1), __builtin_prefetch(&torque[t][id2], 1);
 		}
 		void addTo(ForceContainer& forces) const
 		{

@@ -96,6 +96,7 @@ void DiscInteractionLoop::action()
 #pragma omp parallel for schedule(guided) num_threads(threads)
 #endif
 	for (long i = 0; i < size; i++) {
+		if (i + toppling::prefetchAhead < size) prefetch(i + toppling::prefetchAhead, arrays);
 		if (arrays && slots[i].bond >= 0) {
 			Slot&               slot = slots[i];
 			toppling::DiscBond& bond = bonds[slot.bond];
@@ -146,6 +147,24 @@ void DiscInteractionLoop::action()
 	lastReader = readerBeforeNextLoop(); // a law may have stopped the run in the loop
 	if (lastReader != Reader::none) flush();
 	if (lastReader == Reader::any) arraysCurrent = false; // what reads them may also change them
+}
+
+// Asks for what interaction i will read, a few interactions early: the bodies a pair joins lie
+// anywhere in the per-body arrays, an interaction's objects anywhere in memory, and the step
+// otherwise waits on each in turn.
+void DiscInteractionLoop::prefetch(long i, bool arrays) const
+{
+	if (!arrays || slots[i].bond < 0) {
+		__builtin_prefetch((*scene->interactions)[i].get());
+		return;
+	}
+	const Slot& slot = slots[i];
+	for (const Body::id_t id : { slot.id1, slot.id2 }) {
+		const char* m = reinterpret_cast<const char*>(&motion[id]);
+		__builtin_prefetch(m), __builtin_prefetch(m + sizeof(toppling::Kinematics) - 1);
+		__builtin_prefetch(&radius[id]);
+	}
+	sums.prefetchPair(slot.id1, slot.id2);
 }
 
 // Runs `steps` steps in this thread; the disc path keeps the bonds in its array between them.

@@ -72,6 +72,7 @@ private:
 	bool                              turnPending  = false;
 	long                              colliderRuns = -1; // the collider's numAction when `slots` were built
 	void                              gather();
+	void                              prefetch(long i, bool arrays) const;
 	bool                              dispatched(const shared_ptr<Interaction>& I, const shared_ptr<Body>& b1, const shared_ptr<Body>& b2);
 	void                              updateDiscPair(ScGeom& geom, Body::id_t id1, Body::id_t id2) const;
 	bool                              apart(Body::id_t id1, Body::id_t id2, Real detection) const;

@@ -70,6 +70,7 @@ void DiscNewtonIntegrator::integrate(DiscInteractionLoop& loop)
 #pragma omp parallel for reduction(max : max) num_threads(ompThreads > 0 ? std::min(ompThreads, omp_get_max_threads()) : omp_get_max_threads())
 #endif
 	for (long id = 0; id < n; ++id) {
+		if (id + toppling::prefetchAhead < n) prefetchState(bodies[id + toppling::prefetchAhead].state);
 		const Constants& c = bodies[id];
 		if (!c.state) continue;
 		State& s = *c.state;
@@ -97,6 +98,17 @@ void DiscNewtonIntegrator::integrate(DiscInteractionLoop& loop)
 	maxVelocitySq    = max;
 	loop.motionFresh = loop.turnPending = true;
 	if (loop.lastReader == DiscInteractionLoop::Reader::any) loop.settleOrientations();
+}
+
+// Asks for the lines of a body's State the step reads and writes (position, orientation, both
+// velocities), a few bodies early: a loaded scene's State objects lie anywhere in memory.
+void DiscNewtonIntegrator::prefetchState(const State* s)
+{
+	if (!s) return;
+	__builtin_prefetch(s, 1);
+	const char* motion = reinterpret_cast<const char*>(&s->se3);
+	__builtin_prefetch(motion, 1), __builtin_prefetch(motion + 64, 1);
+	__builtin_prefetch(reinterpret_cast<const char*>(&s->angVel + 1) - 1, 1);
 }
 
 // NewtonIntegrator::computeAccel and cundallDamp2nd.

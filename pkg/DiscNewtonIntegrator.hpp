@@ -42,6 +42,7 @@ private:
 	bool                   covers(const DiscInteractionLoop& loop);
 	bool                   takeConstants();
 	void                   integrate(DiscInteractionLoop& loop);
+	static void            prefetchState(const State* s);
 	Vector3r               linearAcceleration(const Vector3r& f, const Constants& c, const Vector3r& vel) const;
 	Vector3r               angularAcceleration(const Vector3r& m, const Constants& c, const Vector3r& angVel) const;
 };
