@@ -217,6 +217,24 @@ def test_resumed_ramp_and_stage_continue_from_their_start(empty_scene):
     assert O.time - resumed_at == pytest.approx(criteria.chunk, rel=0.05)
 
 
+def test_a_resumed_stage_judges_rest_over_the_window_its_checkpoint_kept(empty_scene):
+    """A stage's watch lives in a list the run checkpoints (as JSON): resumed with it, a stage at
+    rest is judged after one chunk, as the uninterrupted stage would be; started afresh it waits a
+    whole rest window."""
+    setup = incline.build(0.1, 0.05, 0.012 / 2.5, 0.012, ROCK, 40.0)
+    incline.settle(0.02)
+    watched = [setup.block]
+    criteria = tilting.StageCriteria(chunk=0.01, rest_speed=1e-3, fail_displacement=1.0, max_stage_time=1.0,
+                                     rest_window=0.05)
+    kept = json.loads(json.dumps([tilting.medians(watched).tolist()] * criteria.window_chunks))
+    for history, chunks in ((kept, 1), (None, criteria.window_chunks)):
+        began = O.time
+        reference = tilting.medians(watched)
+        assert tilting.run_stage(0.0, watched, reference, criteria, history=history) == "equilibrium"
+        assert O.time - began == pytest.approx(chunks * criteria.chunk, rel=0.05)
+    assert len(kept) == criteria.window_chunks + 1  # the window and the chunk now, no more
+
+
 def test_column_top_points_are_the_discs_nearest_the_tops_and_skip_an_empty_column(empty_scene, capsys):
     layout = columns.ColumnLayout(toe_x=0.15, width=0.05, heights=[0.1, 0.25, 0.2])
     discs = {(0.075, 0.24): "top of B-2", (0.075, 0.1): "", (0.03, 0.15): "", (0.02, 0.18): "top of C-3"}

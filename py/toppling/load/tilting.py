@@ -1,7 +1,6 @@
 """Tilting by rotating gravity (thesis Fig 5-7), in stages run to equilibrium or failure."""
 from __future__ import annotations
 
-import collections
 import math
 from dataclasses import dataclass
 from typing import Callable, Optional, Sequence
@@ -140,17 +139,23 @@ def stage_outcome(now: np.ndarray, before: Optional[np.ndarray], reference: np.n
 
 
 class Watch:
-    """The medians of watched groups of discs, kept over the last ``rest_window`` of chunks."""
+    """The medians of watched groups of discs, kept over the last ``rest_window`` of chunks in
+    ``history`` (a list of lists: a run that keeps it in its checkpoint resumes a stage judged
+    as the uninterrupted stage is, rather than waiting a whole rest window again)."""
 
-    def __init__(self, groups: Sequence[Sequence[int]], criteria: StageCriteria):
+    def __init__(self, groups: Sequence[Sequence[int]], criteria: StageCriteria, history: Optional[list] = None):
         self.groups = groups
-        self.history = collections.deque([medians(groups)], maxlen=criteria.window_chunks + 1)
+        self.length = criteria.window_chunks + 1
+        self.history = [] if history is None else history
+        if not self.history:
+            self.history.append(medians(groups).tolist())
 
     def chunk_done(self) -> tuple[np.ndarray, Optional[np.ndarray]]:
         """The medians now and a rest window ago (None until the watch is that old)."""
-        self.history.append(medians(self.groups))
-        full = len(self.history) == self.history.maxlen
-        return self.history[-1], self.history[0] if full else None
+        self.history.append(medians(self.groups).tolist())
+        del self.history[:-self.length]
+        full = len(self.history) == self.length
+        return np.array(self.history[-1]), np.array(self.history[0]) if full else None
 
 
 def on_table(groups: Sequence[Sequence[int]], floor: float) -> list[list[int]]:
@@ -187,7 +192,8 @@ def run_arrest(watched: Sequence[Sequence[int]], floor: float, criteria: StageCr
 
 
 def run_stage(alpha_deg: float, watched: Sequence[Sequence[int]], reference: np.ndarray, criteria: StageCriteria,
-              on_chunk: Optional[Callable[[], None]] = None, start: Optional[float] = None) -> str:
+              on_chunk: Optional[Callable[[], None]] = None, start: Optional[float] = None,
+              history: Optional[list] = None) -> str:
     """Tilt to ``alpha_deg`` and run until ``'equilibrium'`` or ``'failed'`` (see
     StageCriteria), judged on the medians of the ``watched`` groups of discs (one loose disc
     rattling, or a corner breaking off, must not count as a column moving) against their
@@ -196,9 +202,10 @@ def run_stage(alpha_deg: float, watched: Sequence[Sequence[int]], reference: np.
     ``max_stage_time`` and have moved further than ``rest_speed`` times the stage's time
     (stage_outcome).
     ``start``: the simulated time the stage began (now by default; a resumed run passes the
-    checkpointed one, so max_stage_time counts the whole stage)."""
+    checkpointed one, so max_stage_time counts the whole stage); ``history``: the Watch's, kept
+    by the caller (a resumed run passes the checkpointed one)."""
     set_tilt(alpha_deg)
-    start, watch = O.time if start is None else start, Watch(watched, criteria)
+    start, watch = O.time if start is None else start, Watch(watched, criteria, history)
     while True:
         run_checked(criteria.chunk, f"the stage at {alpha_deg} deg")
         now, before = watch.chunk_done()

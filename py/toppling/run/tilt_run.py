@@ -283,7 +283,7 @@ class TiltRun:
         if p.stage_rate > 0 and alpha > p.start_tilt:  # the step as a ramp: no dynamic overshoot
             tilting.ramp(alpha - p.step, alpha, p.step / p.stage_rate, self.on_chunk, start=phase["start"])
         return tilting.run_stage(alpha, self.watched, np.array(phase["reference"]), self.criteria, self.on_chunk,
-                                 start=phase["start"])
+                                 start=phase["start"], history=phase.setdefault("watch", []))
 
     def analyse(self, tilt: float, onset: Optional[dict] = None) -> dict:
         """The failure of the last stage (at ``tilt``), from the displacements since the last
