@@ -5,8 +5,9 @@ edge the foremost one lies against the margin (b − h tan φ)/2 within which a 
 reaction must fall; then every 0.01 s, then 0.05 s: its toe's slide, its turn, its joint contacts
 and the loaded ones' place behind the toe disc (docs/verification.md).
 
-    ./yade -x -n -j1 calibration/block_on_incline/band.py [rmax [bond_gap [phi [joint_stiffness_scale]]]]
-    # defaults: 0.004 m, 0.05 Rmin, 20 deg, 1
+    ./yade -x -n -j1 calibration/block_on_incline/band.py [rmax [bond_gap [phi [joint_stiffness_scale [ramp]]]]]
+    # defaults: 0.004 m, 0.05 Rmin, 20 deg, 1, 0 s (tilted at once; else over ramp seconds, the clock
+    # starting when it is done)
 """
 import math
 import sys
@@ -23,6 +24,7 @@ rmax = float(sys.argv[1]) if len(sys.argv) > 1 else 0.004
 bond_gap = float(sys.argv[2]) if len(sys.argv) > 2 else incline.BOND_GAP
 phi = float(sys.argv[3]) if len(sys.argv) > 3 else 20.0
 scale = float(sys.argv[4]) if len(sys.argv) > 4 else 1.0
+ramp = float(sys.argv[5]) if len(sys.argv) > 5 else 0.0
 b, h = 0.09, 0.2
 block = incline.build(b, h, rmax / params.PACKING_R_RATIO, rmax, params.TABLE_5_6_ROCK, phi, bond_gap=bond_gap,
                       joint_stiffness_scale=scale)
@@ -35,6 +37,10 @@ at_rest = sorted((O.bodies[i.id1 if i.id1 in members else i.id2].state.pos[0] - 
 print("at rest, joint contacts (mm behind the toe disc, N):", [(round(1e3 * x, 1), round(f, 1)) for x, f in at_rest])
 print(f"foremost joint contact {1e3 * (edge - toe_x - at_rest[-1][0]):.1f} mm behind the toe edge; a sliding block's "
       f"reaction lies {1e3 * (b - h * math.tan(math.radians(phi))) / 2:.1f} mm behind it", flush=True)
+if ramp > 0:
+    tilting.ramp(0.0, 30.0, ramp)
+    print(f"tilted over {ramp:g} s: slid {1e3 * (O.bodies[block.toe].state.pos[0] - toe_x):.1f} mm, turned "
+          f"{incline.mean_spin_deg(block.block):.2f} deg", flush=True)
 tilting.set_tilt(30.0)
 start = O.time
 for interval in [0.01] * 5 + [0.05] * 7:
