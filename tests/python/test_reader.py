@@ -41,4 +41,5 @@ def test_results_added_to_a_summary_keep_its_inputs_and_figures(tmp_path):
     from toppling.io import output
     output.write_summary(str(tmp_path), {"a": 1}, failed=False)
     output.add_to_summary(str(tmp_path), first_break_factor=12.5)
-    assert summary_of(str(tmp_path)) == {"inputs": {"a": 1}, "failed": False, "first_break_factor": 12.5}
+    assert summary_of(str(tmp_path)) == {"inputs": {"a": 1}, "failed": False, "first_break_factor": 12.5,
+                                         "code": output.CODE}

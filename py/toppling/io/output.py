@@ -5,12 +5,32 @@ import json
 import math
 import os
 import shutil
-from typing import Any
+import subprocess
+from typing import Any, Optional
 
 import matplotlib
 
 matplotlib.use("Agg")  # headless: examples run under `yade -x -n`
 import matplotlib.pyplot as plt  # noqa: E402
+
+
+def code_version() -> Optional[dict[str, Any]]:
+    """The commit of the checkout this package runs from, and whether its tracked files differ
+    from it; None outside a git checkout. Taken when the run starts (this module's import): a
+    checkout updated while a run goes does not change the code the run has loaded."""
+    try:
+        return {"commit": _git("rev-parse", "HEAD"), "modified": bool(_git("status", "--porcelain", "--untracked-files=no"))}
+    except (OSError, subprocess.SubprocessError):
+        return None
+
+
+def _git(*args: str) -> str:
+    """A git command's output in the checkout that holds this package."""
+    repo = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))))
+    return subprocess.run(["git", "-C", repo, *args], capture_output=True, text=True, check=True, timeout=10).stdout.strip()
+
+
+CODE = code_version()
 
 
 def output_dir(out: str) -> str:
@@ -48,10 +68,11 @@ def summary_path(out: str) -> str:
 
 
 def write_summary(out: str, inputs: dict[str, Any], **results: Any) -> str:
-    """Write ``<out>/summary.json`` with the run's inputs and results; returns its path."""
+    """Write ``<out>/summary.json`` with the run's inputs, results and the code that ran them
+    (``code``: code_version() when the run started); returns its path."""
     path = summary_path(output_dir(out))
     with open(path, "w") as f:
-        json.dump({"inputs": inputs, **results}, f, indent=2, default=float)
+        json.dump({"inputs": inputs, **results, "code": CODE}, f, indent=2, default=float)
     return path
 
 
@@ -60,6 +81,7 @@ def add_to_summary(out: str, **results: Any) -> str:
     with open(summary_path(out)) as f:
         summary = json.load(f)
     summary.update(results)
+    summary.pop("code", None)  # the code that wrote it last
     return write_summary(out, summary.pop("inputs"), **summary)
 
 
