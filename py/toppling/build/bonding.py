@@ -83,6 +83,31 @@ def rock(ids: Sequence[int], min_bonds: int = 2) -> list[int]:
     return [i for i in ids if intact_bonds(i) >= min_bonds]
 
 
+def largest_piece(ids: Sequence[int]) -> list[int]:
+    """The discs of ``ids`` in the largest piece that intact bonds between them hold together
+    (ties: the piece of the smallest id), in the order of ``ids``. The others are loose in it:
+    once its bonds across a joint are cut, a disc bonded only across it, or a cluster bonded only
+    to itself, rattles between the blocks and wedges them."""
+    members, root = set(ids), {i: i for i in ids}
+
+    def find(i: int) -> int:
+        while root[i] != i:
+            root[i] = root[root[i]]
+            i = root[i]
+        return i
+
+    for i in ids:
+        for I in O.bodies[i].intrs():
+            other = I.id2 if I.id1 == i else I.id1
+            if other in members and is_bond(I.phys):
+                root[find(i)] = find(other)
+    sizes: dict[int, int] = defaultdict(int)
+    for i in ids:
+        sizes[find(i)] += 1
+    main = max(sizes, key=lambda r: (sizes[r], -r))
+    return [i for i in ids if find(i) == main]
+
+
 def _intact_now(body_id: int) -> int:
     """A disc's intact bonds now; a deleted disc has none."""
     return intact_bonds(body_id) if O.bodies[body_id] is not None else 0

@@ -38,7 +38,9 @@ def build(b: float, h: float, rmin: float, rmax: float, rock: dict, joint_fricti
     ``rock``: ParallelBondMat parameters. Discs within ``bond_gap`` x Rmin are bonded, and those
     pairs across the joint become its contacts. The joint has the bonds' stiffness per area (times
     ``joint_stiffness_scale``) and friction ``joint_friction_deg``; ``smooth=False`` only cuts the
-    bonds across it (plain disc contacts with that friction).
+    bonds across it (plain disc contacts with that friction). The block is its largest bonded
+    piece: discs the joint leaves loose in it (bonded only across the joint, or only to each
+    other) are deleted, as floaters are.
     """
     width, thickness, x0 = 2 * b + 2 * h, 10 * rmax, 0.5 * b  # room downhill (+x) to slide or topple
     section = [(0, -thickness), (width, -thickness), (width, 0), (x0 + b, 0), (x0 + b, h), (x0, h), (x0, 0), (0, 0)]
@@ -62,6 +64,11 @@ def build(b: float, h: float, rmin: float, rmax: float, rock: dict, joint_fricti
         joints.install_joints([(interface, mechanics)], *box)
     else:
         joints.cut_bonds(interface, *box)
+    held = set(bonding.largest_piece(block))  # the block is one rigid piece; what the joint set loose goes
+    for i in block:
+        if i not in held:
+            O.bodies.erase(i)
+    block = [i for i in block if i in held]
     toe = min(block, key=lambda i: (O.bodies[i].state.pos - (x0 + b, 0, 0)).norm())
     return BlockOnBase(block, base, toe, b, h)
 
