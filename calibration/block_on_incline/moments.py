@@ -1,12 +1,12 @@
-"""What turns a block sliding in Sagaseta's band: a 20 x 40 cm block (b/h 0.5) on the incline at
+"""What turns a block sliding in Sagaseta's band: a block (20 x 40 cm: b/h 0.5) on the incline at
 30 deg, settled level, tilted at once; every 0.01 s its slide, how far its centre of mass has sunk
 into the base, its turn and spin, and the joint's forces on it (normal N, shear S), the reaction's
 place along the base from the centre of mass, the loaded joint contacts, and the moments of the
 joint's normal and shear forces about the centre of mass beside the moment of every force on the
 block (docs/verification.md).
 
-    ./yade -x -n -j1 calibration/block_on_incline/moments.py [phi [rmax [steps of 0.01 s]]]
-    # defaults: 10 deg, 0.012 m, 30
+    ./yade -x -n -j1 calibration/block_on_incline/moments.py [phi [rmax [chunks of 0.01 s [b [h]]]]]
+    # defaults: 10 deg, 0.012 m, 30, 0.2 m, 0.4 m
 """
 import sys
 
@@ -22,7 +22,8 @@ from toppling.run.steps import run_steps, steps_in
 phi = float(sys.argv[1]) if len(sys.argv) > 1 else 10.0
 rmax = float(sys.argv[2]) if len(sys.argv) > 2 else 0.012
 chunks = int(sys.argv[3]) if len(sys.argv) > 3 else 30
-b, h = 0.2, 0.4
+b = float(sys.argv[4]) if len(sys.argv) > 4 else 0.2
+h = float(sys.argv[5]) if len(sys.argv) > 5 else 0.4
 block = incline.build(b, h, rmax / params.PACKING_R_RATIO, rmax, params.TABLE_5_6_ROCK, phi)
 incline.settle(0.05)
 members = set(block.block)
