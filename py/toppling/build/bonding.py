@@ -2,7 +2,7 @@
 from __future__ import annotations
 
 from collections import defaultdict
-from typing import Iterator, Optional, Sequence
+from typing import Iterable, Iterator, Optional, Sequence
 
 from yade import O, utils
 from yade.wrapper import Sphere
@@ -83,12 +83,10 @@ def rock(ids: Sequence[int], min_bonds: int = 2) -> list[int]:
     return [i for i in ids if intact_bonds(i) >= min_bonds]
 
 
-def largest_piece(ids: Sequence[int]) -> list[int]:
-    """The discs of ``ids`` in the largest piece that intact bonds between them hold together
-    (ties: the piece of the smallest id), in the order of ``ids``. The others are loose in it:
-    once its bonds across a joint are cut, a disc bonded only across it, or a cluster bonded only
-    to itself, rattles between the blocks and wedges them."""
-    members, root = set(ids), {i: i for i in ids}
+def pieces(ids: Iterable[int], joined: Iterable[tuple[int, int]]) -> dict[int, int]:
+    """Each of ``ids`` mapped to one disc of its piece: the discs that the pairs ``joined`` chain
+    together (pairs with a disc not among ``ids`` are ignored)."""
+    root = {i: i for i in ids}
 
     def find(i: int) -> int:
         while root[i] != i:
@@ -96,16 +94,24 @@ def largest_piece(ids: Sequence[int]) -> list[int]:
             i = root[i]
         return i
 
-    for i in ids:
-        for I in O.bodies[i].intrs():
-            other = I.id2 if I.id1 == i else I.id1
-            if other in members and is_bond(I.phys):
-                root[find(i)] = find(other)
+    for i, j in joined:
+        if i in root and j in root:
+            root[find(i)] = find(j)
+    return {i: find(i) for i in root}
+
+
+def largest_piece(ids: Sequence[int]) -> list[int]:
+    """The discs of ``ids`` in the largest piece that intact bonds between them hold together
+    (ties: the piece of the smallest id), in the order of ``ids``. The others are loose in it:
+    once its bonds across a joint are cut, a disc bonded only across it, or a cluster bonded only
+    to itself, rattles between the blocks and wedges them."""
+    bonded = ((I.id1, I.id2) for i in ids for I in O.bodies[i].intrs() if is_bond(I.phys))
+    piece = pieces(ids, bonded)
     sizes: dict[int, int] = defaultdict(int)
     for i in ids:
-        sizes[find(i)] += 1
+        sizes[piece[i]] += 1
     main = max(sizes, key=lambda r: (sizes[r], -r))
-    return [i for i in ids if find(i) == main]
+    return [i for i in ids if piece[i] == main]
 
 
 def _intact_now(body_id: int) -> int:

@@ -8,6 +8,7 @@ from yade import O, utils
 from yade.wrapper import (Ip2_ParallelBondMat_ParallelBondMat_ParallelBondPhys,
                           JointSetGeometry, JointSystem, SmoothJointMat, SmoothJointPhys)
 
+from toppling.build import bonding
 from toppling.build.engines import functor, limit_timestep
 from toppling.checks import require
 
@@ -106,19 +107,10 @@ def assign_pieces(system: JointSystem) -> None:
     bonds within one block. Joints are what cut bonds, so a piece is bounded by joints. A disc
     without an intact bond in its block is a piece of its own: its new contacts are joints."""
     blocks = list(system.blockOfBody)
-    root = list(range(len(blocks)))
-
-    def find(i: int) -> int:
-        while root[i] != i:
-            root[i] = root[root[i]]
-            i = root[i]
-        return i
-
-    for I in O.interactions:
-        if I.isReal and getattr(I.phys, "bondState", 0) == 1 and blocks[I.id1] == blocks[I.id2] >= 0:
-            root[find(I.id1)] = find(I.id2)
+    piece = bonding.pieces(range(len(blocks)), ((I.id1, I.id2) for I in O.interactions if I.isReal and
+                                                getattr(I.phys, "bondState", 0) == 1 and blocks[I.id1] == blocks[I.id2] >= 0))
     labels: dict[int, int] = {}
-    system.blockOfBody = [labels.setdefault(find(i), len(labels)) if b >= 0 else -1 for i, b in enumerate(blocks)]
+    system.blockOfBody = [labels.setdefault(piece[i], len(labels)) if b >= 0 else -1 for i, b in enumerate(blocks)]
 
 
 def cut_bonds(geometry: JointSetGeometry, lo, hi) -> int:
