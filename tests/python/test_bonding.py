@@ -20,3 +20,4 @@ def test_the_largest_piece_is_what_intact_bonds_hold_together(empty_scene):
     assert bonding.largest_piece(ids[::-1]) == ids[2::-1]  # in the order given
     O.interactions[ids[1], ids[2]].phys.bondState = 2  # broken in tension
     assert bonding.largest_piece(ids) == ids[:2]
+    assert bonding.largest_piece(ids[3:] + ids[:2]) == ids[:2]  # the tie goes to the smallest id, whatever the order

@@ -107,11 +107,11 @@ def largest_piece(ids: Sequence[int]) -> list[int]:
     to itself, rattles between the blocks and wedges them."""
     bonded = ((I.id1, I.id2) for i in ids for I in O.bodies[i].intrs() if is_bond(I.phys))
     piece = pieces(ids, bonded)
-    sizes: dict[int, int] = defaultdict(int)
+    members: dict[int, list[int]] = defaultdict(list)
     for i in ids:
-        sizes[piece[i]] += 1
-    main = max(sizes, key=lambda r: (sizes[r], -r))
-    return [i for i in ids if piece[i] == main]
+        members[piece[i]].append(i)
+    main = max(members, key=lambda r: (len(members[r]), -min(members[r])))
+    return members[main]
 
 
 def _intact_now(body_id: int) -> int:

@@ -64,11 +64,10 @@ def build(b: float, h: float, rmin: float, rmax: float, rock: dict, joint_fricti
         joints.install_joints([(interface, mechanics)], *box)
     else:
         joints.cut_bonds(interface, *box)
-    held = set(bonding.largest_piece(block))  # the block is one rigid piece; what the joint set loose goes
-    for i in block:
-        if i not in held:
-            O.bodies.erase(i)
-    block = [i for i in block if i in held]
+    held = bonding.largest_piece(block)  # the block is one rigid piece; what the joint set loose goes
+    for i in set(block) - set(held):
+        O.bodies.erase(i)
+    block = held
     toe = min(block, key=lambda i: (O.bodies[i].state.pos - (x0 + b, 0, 0)).norm())
     return BlockOnBase(block, base, toe, b, h)
 
