@@ -10,7 +10,10 @@ each; every other parameter the example's default.
     ./toppling-sweep benchmarks/speed_accuracy_tilting_table.table examples/tilting_table/run.py
     ./toppling-sweep benchmarks/speed_accuracy_equivalent_slope.table examples/equivalent_slope/run.py
     source scripts/env.sh; /usr/bin/python3 benchmarks/speed_accuracy.py report   # Markdown, CSV, charts
-The report uses the runs done so far; results/speed_accuracy/<model>.csv and .png.
+    source scripts/env.sh; /usr/bin/python3 benchmarks/speed_accuracy.py missing  # each table's lines not run yet
+The report first adds the finished runs to the record (benchmarks/records/speed_accuracy_<model>.csv,
+kept in git: a new machine starts from it), then reads every run from there; it writes
+results/speed_accuracy/<model>.csv and .png.
 """
 import csv
 import os
@@ -18,8 +21,7 @@ import statistics
 import sys
 
 from examples import params
-from toppling.io import output
-from toppling.io.reader import read_summaries
+from toppling.io import output, records
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 RESULTS = "results/speed_accuracy"
@@ -64,16 +66,33 @@ def write_tables() -> None:
 
 
 def value(summary: dict, key: str):
-    v = summary.get(key)
-    return float(bool(v)) if key == "failed" else v
+    """A summary's figure as a record holds it: flags as 0 or 1 (``failed`` absent: 0)."""
+    v = bool(summary.get(key)) if key == "failed" else summary.get(key)
+    return float(v) if isinstance(v, bool) else v
+
+
+COST = ("rmin", "rmax", "seed", "discs", "steps", "wall_time", "failed_in_first_stage")
+
+
+def record_path(model: str) -> str:
+    return f"{HERE}/records/speed_accuracy_{model}.csv"
+
+
+def record(model: str) -> dict[str, dict]:
+    """The model's record with the finished runs in results/ added: every run, by name."""
+    def row(name: str, s: dict) -> dict:
+        return {"run": name, **{k: s["inputs"][k] for k in ("rmin", "rmax", "seed")},
+                **{k: value(s, k) for k in COST[3:]}, **{k: value(s, k) for k, _ in ANSWERS[model]},
+                "commit": records.commit(s)}
+    return records.update(record_path(model), f"{RESULTS}/{model}", row, COST + tuple(k for k, _ in ANSWERS[model]))
 
 
 def by_size(model: str) -> list[dict]:
     """Per size (coarse to fine): the runs' cost and each answer's values."""
-    runs = read_summaries(f"{RESULTS}/{model}")
+    runs = record(model)
     found = []
     for rmin, rmax in sizes(model):
-        mine = [s for s in runs.values() if (s["inputs"]["rmin"], s["inputs"]["rmax"]) == (rmin, rmax)]
+        mine = [s for s in runs.values() if (s["rmin"], s["rmax"]) == (rmin, rmax)]
         if not mine:
             continue
         row = {"rmin": rmin, "rmax": rmax, "width_over_rmax": MODELS[model][0] / rmax, "runs": len(mine),
@@ -81,7 +100,7 @@ def by_size(model: str) -> list[dict]:
                "wall_time": statistics.mean(s["wall_time"] for s in mine),
                "first_stage": sum(bool(s.get("failed_in_first_stage")) for s in mine)}  # a failure tilt at most that
         for key, _ in ANSWERS[model]:
-            row[key] = [v for s in mine if (v := value(s, key)) is not None]
+            row[key] = [s[key] for s in mine if s[key] is not None]
         found.append(row)
     return found
 
@@ -151,6 +170,9 @@ def chart(model: str, rows: list[dict]) -> None:
 if __name__ == "__main__":
     if sys.argv[1:] == ["tables"]:
         write_tables()
+    elif sys.argv[1:] == ["missing"]:
+        for name in MODELS:
+            print(f"{name}: --lines {records.missing(f'{HERE}/speed_accuracy_{name}.table', record(name)) or '(none)'}")
     else:
         for name in MODELS:
             report(name)

@@ -23,6 +23,7 @@ fi
 paraview_python="${TOPPLING_CACHE:-${XDG_CACHE_HOME:-$HOME/.cache}/toppling}/paraview"
 if [ ! -d "$paraview_python/usr/lib/python3/dist-packages/paraview" ]; then
   download=$(mktemp -d)
+  mkdir -p "$paraview_python"  # dpkg-deb -x makes the last folder only; a fresh machine has no cache yet
   (cd "$download" && { apt-get download -q python3-paraview || { "${sudo_cmd[@]}" apt-get update -qq &&
     apt-get download -q python3-paraview; }; } && dpkg-deb -x python3-paraview_*.deb "$paraview_python")
   rm -rf "$download"

@@ -4,8 +4,9 @@ the figures Fig 5-25 (against D/H) and Fig 5-29 (against the main joints' fricti
 
     source scripts/env.sh; /usr/bin/python3 calibration/equivalent_slope/families_report.py [results/equivalent_slope/families]
 
-A case stands when most of its seeds stand (no failure). Writes fig_5_25.png and fig_5_29.png
-into the results folder.
+Ours come from the families' record (record.py), which the folder's finished runs are first
+added to. A case stands when most of its seeds stand (no failure). Writes fig_5_25.png and
+fig_5_29.png into the results folder.
 """
 import csv
 import os
@@ -15,9 +16,9 @@ import sys
 import matplotlib.pyplot as plt
 from scipy import stats
 
+import record
 from collect import mean_sd  # this folder's: runs as a script
 from toppling.io import output
-from toppling.io.reader import read_summaries
 
 THESIS = os.path.join(os.path.dirname(__file__), "records", "thesis_families.csv")
 FRICTION_TREND = [f"t510_{k}" for k in range(2, 9)]  # Table 5-10 cases 2-8: φ rises with Jφ
@@ -28,10 +29,11 @@ def thesis_cases() -> dict[str, dict]:
         return {row["case"]: row for row in csv.DictReader(f)}
 
 
-def by_case(folder: str) -> dict[str, list[dict]]:
+def by_case(rows: dict[str, dict]) -> dict[str, list[dict]]:
+    """The record's rows by case (a run's name without its seed)."""
     found: dict[str, list[dict]] = {}
-    for name, s in read_summaries(folder).items():
-        found.setdefault(name.rsplit("_s", 1)[0], []).append(s)
+    for name, r in rows.items():
+        found.setdefault(name.rsplit("_s", 1)[0], []).append(r)
     return found
 
 
@@ -55,7 +57,7 @@ def table(cases: dict[str, dict], ours: dict[str, list[dict]]) -> int:
             print(f"| {t['label']} | 0 | not run | | | | | | | |")
             continue
         agree += name != "base" and stands(runs) == (t["stands"] == "1")
-        planes = "/".join(str(s.get("planes", 0)) for s in runs)
+        planes = "/".join(str(int(s["planes"] or 0)) for s in runs)
         print(f"| {t['label']} | {len(runs)} | {sum(not s.get('failed') for s in runs)} of {len(runs)} / "
               f"{'yes' if t['stands'] == '1' else 'no'} | {planes} / {t['planes']} | "
               f"{mean_sd(values(runs, 'phi_overall_deg'), 1)} | {t['phi_deg'] or '-'} | "
@@ -72,8 +74,7 @@ def friction_trend(ours: dict[str, list[dict]]) -> list[float]:
             if name.startswith(case + "_mu"):
                 for s in runs:
                     if s.get("failed") and s.get("phi_overall_deg") is not None:
-                        per_seed.setdefault(s["inputs"]["seed"], []).append(
-                            (s["inputs"]["main_joint_friction"], s["phi_overall_deg"]))
+                        per_seed.setdefault(s["seed"], []).append((s["main_joint_friction"], s["phi_overall_deg"]))
     return [stats.spearmanr(*zip(*pairs))[0] for pairs in per_seed.values() if len(pairs) > 2]
 
 
@@ -106,7 +107,8 @@ def figure(cases: dict[str, dict], ours: dict[str, list[dict]], table_name: str,
 
 
 def main(folder: str) -> None:
-    cases, ours = thesis_cases(), by_case(folder)
+    os.makedirs(folder, exist_ok=True)
+    cases, ours = thesis_cases(), by_case(record.update(folder))
     agree = table(cases, ours)
     run = sum(1 for name in cases if name != "base" and ours.get(name))
     print(f"\nstand or fail as the thesis: {agree} of the {run} family cases run (the issue asks at least 28 of 32)")
