@@ -76,6 +76,7 @@ TILTING_TABLE_IDEAL = dict(
     arrangement="ideal", rmin=1e-3, rmax=4e-3, porosity=0.18, seed=1, layout_seed=1,  # m, m, -
     bond_tensile_strength=CALIBRATED_BOND_TENSILE_STRENGTH["ideal"], main_joint_friction=0.0,
     base_joint_friction=0.0, joint_stiffness_scale=0.01, bond_gap=0.0, cut_rules=1, joint_pieces=1, z_order=0,
+    face_closure=0,  # 1: joint contacts made after installation start with their faces' closure (JointSystem.faceClosure)
     disc_path=1,  # 1: DiscInteractionLoop, DiscNewtonIntegrator; 0: YADE's generic engines (the same results)
     model="ours",  # 'jcfpm': the same scene in YADE's JCFpm (docs/jcfpm.md)
     timestep_safety=0.8, damping=0.0, settle_damping=0.7,  # local damping while tilting, on the level table
@@ -103,6 +104,7 @@ EQUIVALENT_SLOPE = dict(
     main_joint_friction=0.20, joint_stiffness_scale=0.01, base_joints="every_other", base_plane_deg=DESIGN_PLANE_DEG,
     merged_pair=0,
     joints_into_foundation=0, joint_gap=TABLE_5_6["gap"], z_order=0,  # joint_gap [m]: the joints' aperture when installed
+    face_closure=0,  # as the tilting table's
     timestep_safety=0.8, damping=0.0, settle_damping=0.7,
     chunk=0.02, rest_speed=1e-3, fail_displacement=0.05, max_stage_time=2.0, fail_columns=2,  # s, m/s, m, s, -
     rest_window=0.2,  # [s] a standing slope rings without local damping: its speed is judged over this window

@@ -24,6 +24,46 @@ boost::python::list JointSystem::crossingPairs(const JointSetGeometry& set, cons
 	return out;
 }
 
+boost::python::list JointSystem::addCrossingPairs(const JointSetGeometry& geometry, int set, const Vector2r& lo, const Vector2r& hi)
+{
+	const Scene& sc = *Omega::instance().getScene();
+	if (set < 0 || size_t(set) >= jointMaterials.size())
+		throw std::invalid_argument(
+		        "JointSystem.addCrossingPairs: set " + std::to_string(set) + " is not in jointMaterials (0 .. "
+		        + std::to_string(int(jointMaterials.size()) - 1) + ")");
+	const auto* mat = dynamic_cast<const SmoothJointMat*>(sc.materials.at(jointMaterials[set]).get());
+	if (!mat) throw std::invalid_argument("JointSystem.addCrossingPairs: jointMaterials[" + std::to_string(set) + "] is not a SmoothJointMat");
+	const std::vector<toppling::geometry::Segment> joints = geometry.toGeometry().segments(toppling::box(lo, hi));
+	boost::python::list                            out;
+	for (const auto& I : *sc.interactions) {
+		if (!I->isReal()) continue;
+		const toppling::geometry::Vec2 p = toppling::xy((*sc.bodies)[I->getId1()]->state->pos);
+		const toppling::geometry::Vec2 q = toppling::xy((*sc.bodies)[I->getId2()]->state->pos);
+		if (!toppling::geometry::crossedSegment(joints, p, q)) continue;
+		addPair(I->getId1(), I->getId2(), set);
+		out.append(boost::python::make_tuple(I->getId1(), I->getId2()));
+	}
+	recordFaces(joints, set, toppling::xy(mat->normal.normalized()));
+	return out;
+}
+
+void JointSystem::recordFaces(const std::vector<toppling::geometry::Segment>& joints, int set, toppling::geometry::Vec2 normal)
+{
+	// Every disc that can touch one across the joint, not only the pairs across it now: a block
+	// that slides brings its toe over rock that had none of it above.
+	const Scene& sc   = *Omega::instance().getScene();
+	Real         rMax = 0;
+	for (const auto& b : *sc.bodies)
+		if (const auto* s = b ? dynamic_cast<const Sphere*>(b->shape.get()) : nullptr) rMax = math::max(rMax, s->radius);
+	for (const auto& b : *sc.bodies) {
+		const auto* s = b ? dynamic_cast<const Sphere*>(b->shape.get()) : nullptr;
+		if (!s) continue;
+		const auto faces = toppling::geometry::facing(joints, toppling::xy(b->state->pos), normal, double(s->radius + 2 * rMax));
+		for (int side = 0; side < 2; ++side)
+			if (std::isfinite(faces[side])) recordFace(b->id, 2 * set + side, faces[side]);
+	}
+}
+
 void JointSystem::assignBlocks(const boost::python::list& persistentSets)
 {
 	std::vector<toppling::geometry::JointSet> sets;
@@ -51,6 +91,45 @@ void JointSystem::rebuildIndex()
 	index.clear();
 	for (size_t i = 0; i < std::min({ pairId1.size(), pairId2.size(), pairSet.size() }); ++i)
 		index[key(pairId1[i], pairId2[i])] = pairSet[i];
+}
+
+void JointSystem::recordFace(Body::id_t id, int side, Real distance)
+{
+	// A disc between two joints of one set closer than its diameter faces the nearer one.
+	const auto it = faceIndex.find(faceKey(id, side));
+	if (it != faceIndex.end()) {
+		faceDistance[it->second] = math::min(faceDistance[it->second], distance);
+		return;
+	}
+	faceIndex[faceKey(id, side)] = faceDistance.size();
+	faceBody.push_back(id);
+	faceSide.push_back(side);
+	faceDistance.push_back(distance);
+}
+
+void JointSystem::rebuildFaceIndex()
+{
+	faceIndex.clear();
+	for (size_t i = 0; i < std::min({ faceBody.size(), faceSide.size(), faceDistance.size() }); ++i)
+		faceIndex[faceKey(faceBody[i], faceSide[i])] = i;
+}
+
+bool JointSystem::faceOf(Body::id_t id, int side, Real& distance) const
+{
+	const auto it = faceIndex.find(faceKey(id, side));
+	if (it == faceIndex.end()) return false;
+	distance = faceDistance[it->second];
+	return true;
+}
+
+void JointSystem::closeFaces(SmoothJointPhys& phys, Body::id_t id1, Body::id_t id2, const SmoothJointMat& mat, const Vector3r& branch, Real rMin) const
+{
+	// phys.jointNormal points from disc 1 to disc 2: disc 2 lies on the side the set's normal points to when they agree.
+	const int twoAhead = phys.jointNormal0.dot(mat.normal) > 0;
+	Real      face1 = 0, face2 = 0;
+	if (!faceOf(id1, 2 * phys.jointSet + 1 - twoAhead, face1) || !faceOf(id2, 2 * phys.jointSet + twoAhead, face2)) return;
+	const Real closure = face1 + face2 - branch.dot(phys.jointNormal);
+	if (math::abs(closure) <= maxFaceClosure * rMin) phys.overlap = closure - mat.gap;
 }
 
 int JointSystem::listedSet(Body::id_t id1, Body::id_t id2) const
@@ -93,7 +172,9 @@ shared_ptr<IPhys> JointSystem::jointPhys(const Interaction& interaction, const S
 	const auto* mat  = dynamic_cast<const SmoothJointMat*>(sc.materials[jointMaterials[set]].get());
 	const auto* geom = dynamic_cast<const ScGeom*>(interaction.geom.get());
 	if (!mat || !geom) return nullptr;
-	return toppling::makeSmoothJoint(*mat, set, *geom, branch, turn);
+	auto phys = toppling::makeSmoothJoint(*mat, set, *geom, branch, turn);
+	if (faceClosure) closeFaces(*phys, id1, id2, *mat, branch, toppling::smallerRadius(geom->refR1, geom->refR2));
+	return phys;
 }
 
 /********************** the rock's rotation **********************/

@@ -5,9 +5,9 @@ edge the foremost one lies against the margin (b − h tan φ)/2 within which a 
 reaction must fall; then every 0.01 s, then 0.05 s: its toe's slide, its turn, its joint contacts
 and the loaded ones' place behind the toe disc (docs/verification.md).
 
-    ./yade -x -n -j1 calibration/block_on_incline/band.py [rmax [bond_gap [phi [joint_stiffness_scale [ramp]]]]]
+    ./yade -x -n -j1 calibration/block_on_incline/band.py [rmax [bond_gap [phi [joint_stiffness_scale [ramp [face_closure]]]]]]
     # defaults: 0.004 m, 0.05 Rmin, 20 deg, 1, 0 s (tilted at once; else over ramp seconds, the clock
-    # starting when it is done)
+    # starting when it is done), 0 (1: new joint contacts start with the faces' closure)
 """
 import math
 import sys
@@ -25,9 +25,10 @@ bond_gap = float(sys.argv[2]) if len(sys.argv) > 2 else incline.BOND_GAP
 phi = float(sys.argv[3]) if len(sys.argv) > 3 else 20.0
 scale = float(sys.argv[4]) if len(sys.argv) > 4 else 1.0
 ramp = float(sys.argv[5]) if len(sys.argv) > 5 else 0.0
+face_closure = len(sys.argv) > 6 and sys.argv[6] == "1"
 b, h = 0.09, 0.2
 block = incline.build(b, h, rmax / params.PACKING_R_RATIO, rmax, params.TABLE_5_6_ROCK, phi, bond_gap=bond_gap,
-                      joint_stiffness_scale=scale)
+                      joint_stiffness_scale=scale, face_closure=face_closure)
 incline.settle(0.05)
 members = set(block.block)
 toe_x = O.bodies[block.toe].state.pos[0]

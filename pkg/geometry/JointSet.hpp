@@ -4,6 +4,9 @@
 #pragma once
 
 #include "Geometry2D.hpp"
+#include <array>
+#include <cmath>
+#include <limits>
 #include <map>
 #include <sstream>
 
@@ -140,12 +143,36 @@ namespace toppling {
 			std::map<std::vector<long>, int> ids_;
 		};
 
-		// The first joint segment of any set crossed by the segment p-q, or -1.
+		// The first of `joints` crossed by the segment p-q, or nullptr.
+		inline const Segment* crossedSegment(const std::vector<Segment>& joints, Vec2 p, Vec2 q)
+		{
+			for (const Segment& j : joints)
+				if (intersects({ p, q }, j)) return &j;
+			return nullptr;
+		}
+
+		// How far p lies from the joints it faces: [s] the distance to the nearest of `joints` with p
+		// on side s of it (1: the side the unit `normal` points to), infinity where none is within
+		// `reach` of p. A joint faces p where p projects onto it.
+		inline std::array<double, 2> facing(const std::vector<Segment>& joints, Vec2 p, Vec2 normal, double reach)
+		{
+			std::array<double, 2> nearest { std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity() };
+			for (const Segment& j : joints) {
+				const Vec2   along = j.b - j.a;
+				const double t     = dot(p - j.a, along) / dot(along, along);
+				const double d     = dot(p - j.a, normal);
+				if (t < 0 || t > 1 || std::abs(d) > reach) continue;
+				double& side = nearest[d > 0];
+				side         = std::min(side, std::abs(d));
+			}
+			return nearest;
+		}
+
+		// The first set with a joint segment crossed by the segment p-q, or -1.
 		inline int crossedSet(const std::vector<std::vector<Segment>>& jointsBySet, Vec2 p, Vec2 q)
 		{
 			for (size_t i = 0; i < jointsBySet.size(); ++i)
-				for (const Segment& j : jointsBySet[i])
-					if (intersects({ p, q }, j)) return int(i);
+				if (crossedSegment(jointsBySet[i], p, q)) return int(i);
 			return -1;
 		}
 

@@ -165,3 +165,22 @@ TEST(CrossedSet, FindsTheJointBetweenTwoPoints)
 	EXPECT_EQ(crossedSet(sets, { 4, 3 }, { 6, 3 }), 1);
 	EXPECT_EQ(crossedSet(sets, { 1, 2 }, { 2, 3 }), -1);
 }
+
+TEST(CrossedSegment, IsTheJointTheCentreLineCrosses)
+{
+	const std::vector<Segment> joints { { { 0, 1 }, { 10, 1 } }, { { 0, 2 }, { 10, 2 } } };
+	EXPECT_EQ(crossedSegment(joints, { 1, 1.5 }, { 1, 2.5 }), &joints[1]);
+	EXPECT_EQ(crossedSegment(joints, { 1, 0.5 }, { 1, 1.5 }), &joints[0]);
+	EXPECT_EQ(crossedSegment(joints, { 11, 0 }, { 11, 3 }), nullptr);
+}
+
+TEST(Facing, IsTheDistanceToTheNearestJointOnEachSideWithinReach)
+{
+	const std::vector<Segment> joints { { { 0, 1 }, { 10, 1 } }, { { 0, 2 }, { 10, 2 } }, { { 0, 3 }, { 10, 3 } } };
+	const auto                 between = facing(joints, { 5, 1.8 }, { 0, 1 }, 1.0);
+	EXPECT_DOUBLE_EQ(between[1], 0.8);   // above the joint at y = 1
+	EXPECT_NEAR(between[0], 0.2, 1e-12); // below the one at y = 2
+	const auto beyond = facing(joints, { 11, 1.8 }, { 0, 1 }, 1.0);
+	EXPECT_TRUE(std::isinf(beyond[0]) && std::isinf(beyond[1]));           // past the joints' ends
+	EXPECT_TRUE(std::isinf(facing(joints, { 5, 4.5 }, { 0, 1 }, 1.0)[1])); // out of reach
+}

@@ -4,7 +4,7 @@ import math
 import numpy
 import pytest
 from lattice import R, material
-from yade import O, Quaternion
+from yade import O, Quaternion, utils
 from yade.wrapper import JointSetGeometry, Law2_ScGeom_SmoothJointPhys_SmoothJoint, SmoothJointMat
 
 from toppling.build import bonding, engines, joints
@@ -18,11 +18,12 @@ Y_JOINT = math.sqrt(3) * R * (ROWS_SLAB - 0.5)  # between the slab's top row and
 
 
 def block_on_slab(friction_deg: float, smooth: bool = True, segment: bool = False, pieces: bool = True,
-                  loaded: bool = False):
+                  loaded: bool = False, face_closure: bool = False):
     """Fixed slab of discs, bonded block of discs on it, a horizontal joint between: a smooth
     joint (persistent, or with ``segment`` one explicit segment), or (smooth=False) plain disc
     contacts of the same friction. ``loaded``: the bonded scene saved and loaded before the
-    joint is installed (as from a checkpoint or a shared settled rock)."""
+    joint is installed (as from a checkpoint or a shared settled rock). ``face_closure``: new
+    joint contacts start with their faces' closure."""
     rock = material(frictionAngle=math.radians(30 if smooth else friction_deg))
     block = []
     for j in range(ROWS_SLAB + ROWS_BLOCK):
@@ -47,7 +48,7 @@ def block_on_slab(friction_deg: float, smooth: bool = True, segment: bool = Fals
     mechanics = SmoothJointMat(normalStiffness=rock.bondYoung / (2 * R),
                                shearStiffness=rock.bondYoung / (2 * R), frictionAngle=math.radians(friction_deg))
     system = joints.install_joints([(joint, mechanics)], lo=(-R, -R), hi=(2 * R * COLS, 10 * R * ROWS_BLOCK),
-                                   pieces=pieces)
+                                   pieces=pieces, face_closure=face_closure)
     run_steps(2000)  # settle on the joint, damped
     return block, system
 
@@ -186,6 +187,37 @@ def test_without_pieces_a_block_sliding_on_segments_interlocks(empty_scene):
     start = mean_x(block)
     run_steps(64000)
     assert mean_x(block) - start < 3 * R
+
+
+def test_each_joint_disc_records_its_distance_to_the_joint_it_faces_and_a_saved_scene_keeps_it(empty_scene):
+    block, system = block_on_slab(friction_deg=20, loaded=True)
+    O.saveTmp("jointed")
+    O.loadTmp("jointed")
+    system = joints.rock_functor().joints
+    faces = list(zip(system.faceBody, system.faceSide, system.faceDistance))
+    assert len(faces) == 2 * COLS + 2 * 8  # the two rows on either side within reach (3 R): the slab's, the block's
+    for body, side, distance in faces:
+        assert side == (1 if body in block else 0)
+        assert min(abs(distance - k * math.sqrt(3) * R / 2) for k in (1, 3)) < 1e-9 * R
+
+
+@pytest.mark.parametrize("face_closure", [True, False])
+def test_a_contact_remade_under_load_starts_with_its_faces_closure(empty_scene, face_closure):
+    # A joint contact that ends and forms again (as pairs turn over under a sliding block) between
+    # discs whose faces the load presses together: with the faces' closure it takes up its share
+    # of the load at once, as a plane face would; stress-free, it carries nothing until the block
+    # has sunk onto it.
+    block_on_slab(friction_deg=20, face_closure=face_closure)
+    system = joints.rock_functor().joints
+    i, j = system.pairId1[3], system.pairId2[3]
+    O.step()
+    before = O.interactions[i, j].phys.jointNormalForce
+    O.interactions.erase(i, j)
+    utils.createInteraction(i, j)
+    O.step()
+    after = O.interactions[i, j].phys.jointNormalForce
+    assert before > 0
+    assert after == (pytest.approx(before, rel=0.02) if face_closure else pytest.approx(0, abs=0.02 * before))
 
 
 def test_bad_turn_interval_is_rejected():

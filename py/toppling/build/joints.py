@@ -45,7 +45,7 @@ def check_segments_inside(geometry: JointSetGeometry, lo, hi) -> None:
 
 
 def install_joints(sets: Sequence[tuple[JointSetGeometry, SmoothJointMat]], lo, hi,
-                   pieces: bool = True) -> JointSystem:
+                   pieces: bool = True, face_closure: bool = False) -> JointSystem:
     """Install joint sets (geometry, mechanics) in the current scene, within the box lo..hi.
 
     Every interaction whose centre-to-centre segment crosses a joint loses its bond and gets
@@ -54,20 +54,18 @@ def install_joints(sets: Sequence[tuple[JointSetGeometry, SmoothJointMat]], lo, 
     too: with ``pieces`` the piece of rock (``assign_pieces``), else only the band of every
     persistent set, which leaves a block that slides along a joint of explicit segments or
     with rock bridges to make plain, interlocking disc contacts with the rock it slides over.
-    Returns the scene's JointSystem.
+    With ``face_closure`` a joint contact made later starts with the closure of the two discs'
+    faces instead of stress-free (:yref:`JointSystem.faceClosure`). Returns the scene's JointSystem.
     """
     ip2 = rock_functor()
     system = ip2.joints if ip2.joints is not None else JointSystem()
-    materials = list(system.jointMaterials)
     pairs = []
     for geometry, mechanics in sets:
         check_segments_inside(geometry, lo, hi)
         mechanics.normal = joint_normal(geometry)
-        materials.append(O.materials.append(mechanics))
-        for i, j in system.crossingPairs(geometry, lo, hi):
-            system.addPair(i, j, len(materials) - 1)
-            pairs.append((i, j))
-    system.jointMaterials = materials
+        system.jointMaterials = list(system.jointMaterials) + [O.materials.append(mechanics)]
+        pairs += system.addCrossingPairs(geometry, len(system.jointMaterials) - 1, lo, hi)
+    system.faceClosure = face_closure
     system.assignBlocks([g for g, _ in sets if is_persistent(g)])
     ip2.joints = system
     for i, j in pairs:  # the Ip2 now makes them smooth joints

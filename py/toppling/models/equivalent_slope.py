@@ -136,6 +136,7 @@ class EquivalentSlope(BondedDiscs):
     z_order: bool = False
     timestep_safety: float = 0.5
     damping: float = 0.0
+    face_closure: bool = False
     layout: columns.ColumnLayout = field(init=False)
 
     def __post_init__(self):
@@ -212,7 +213,7 @@ class EquivalentSlope(BondedDiscs):
         sets = [(self.main_joints(), self.main.material(self.joint_gap, t))]
         if self.base_joints:  # a set without segments would be one persistent joint along the table plane
             sets.append((self.base_joint_set(), self.base.material(self.joint_gap, t)))
-        joints.install_joints(sets, lo=lo, hi=hi)
+        joints.install_joints(sets, lo=lo, hi=hi, face_closure=self.face_closure)
         print(f"joints installed: {len(self.layout.heights) - 1} main, {len(self.base_joints)} base", flush=True)
 
     def column_top_bands(self, layout: columns.ColumnLayout) -> dict[str, list[int]]:
@@ -226,7 +227,7 @@ class EquivalentSlope(BondedDiscs):
 
 # from_params' parameters that act only once the rock has settled (tilt_run.settled_store)
 JOINT_INPUTS = ("base_joints", "base_plane_deg", "merged_pair", "main_joint_friction", "joint_stiffness_scale",
-                "joint_gap", "joints_into_foundation", "model")
+                "joint_gap", "joints_into_foundation", "face_closure", "model")
 
 
 def from_params(p: Any, thesis: Any) -> EquivalentSlope:
@@ -241,6 +242,7 @@ def from_params(p: Any, thesis: Any) -> EquivalentSlope:
     require("joints_into_foundation", p.joints_into_foundation, "whole [0, 1]")
     require("joint_stiffness_scale", p.joint_stiffness_scale, "(0, 1]")
     require("joint_gap", p.joint_gap, "[0, inf)")
+    require("face_closure", p.face_closure, "whole [0, 1]")
     rock = dict(thesis.TABLE_5_5)
     rock["bondTensileStrength"] *= p.strength_factor
     rock["bondCohesion"] *= p.strength_factor
@@ -255,8 +257,7 @@ def from_params(p: Any, thesis: Any) -> EquivalentSlope:
         joint_gap=p.joint_gap, bond_gap=thesis.TABLE_5_5_BOND_GAP, rmin=p.rmin, rmax=p.rmax, porosity=p.porosity,
         seed=p.seed, base_joints=base, base_plane_deg=p.base_plane_deg, merged_pair=p.merged_pair,
         joints_into_foundation=bool(p.joints_into_foundation), z_order=bool(p.z_order),
-        timestep_safety=p.timestep_safety,
-        damping=p.damping)
+        timestep_safety=p.timestep_safety, damping=p.damping, face_closure=bool(p.face_closure))
 
 
 def protocol(p: Any, model: EquivalentSlope) -> tilt_run.TiltProtocol:

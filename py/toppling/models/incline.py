@@ -32,13 +32,14 @@ BOND_GAP = 0.05  # x Rmin
 
 def build(b: float, h: float, rmin: float, rmax: float, rock: dict, joint_friction_deg: float,
           smooth: bool = True, porosity: float = 0.2, seed: int = 1, joint_stiffness_scale: float = 1.0,
-          bond_gap: float = BOND_GAP) -> BlockOnBase:
+          bond_gap: float = BOND_GAP, face_closure: bool = False) -> BlockOnBase:
     """Pack, bond (unbreakable bonds) and joint a b x h block on a base; gravity vertical.
 
     ``rock``: ParallelBondMat parameters. Discs within ``bond_gap`` x Rmin are bonded, and those
     pairs across the joint become its contacts. The joint has the bonds' stiffness per area (times
     ``joint_stiffness_scale``) and friction ``joint_friction_deg``; ``smooth=False`` only cuts the
-    bonds across it (plain disc contacts with that friction). The block is its largest bonded
+    bonds across it (plain disc contacts with that friction). ``face_closure``: see
+    ``joints.install_joints``. The block is its largest bonded
     piece: discs the joint leaves loose in it (bonded only across the joint, or only to each
     other) are deleted, as floaters are.
     """
@@ -61,7 +62,7 @@ def build(b: float, h: float, rmin: float, rmax: float, rock: dict, joint_fricti
         stiffness = joint_stiffness_scale * mat.bondYoung / (2 * rmin)
         mechanics = SmoothJointMat(normalStiffness=stiffness, shearStiffness=stiffness / mat.bondKnKs,
                                    frictionAngle=math.radians(joint_friction_deg))
-        joints.install_joints([(interface, mechanics)], *box)
+        joints.install_joints([(interface, mechanics)], *box, face_closure=face_closure)
     else:
         joints.cut_bonds(interface, *box)
     held = bonding.largest_piece(block)  # the block is one rigid piece; what the joint set loose goes

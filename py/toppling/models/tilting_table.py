@@ -97,7 +97,8 @@ class TiltingTable(BondedDiscs):
     long stacked in every column at a random offset (``layout_seed``), cut where the layout's
     rules keep a cut (``cut_rules``; False: at every block boundary). ``joint_pieces``: contacts
     made after the joints are installed are joints between pieces of rock. ``z_order``: discs
-    numbered along a Z-order curve (a faster step, other rounding)."""
+    numbered along a Z-order curve (a faster step, other rounding). ``face_closure``: joint
+    contacts made later start with their faces' closure (``joints.install_joints``)."""
     outline: Outline
     rock: dict[str, Any]
     main: JointMaterial
@@ -111,6 +112,7 @@ class TiltingTable(BondedDiscs):
     z_order: bool = False
     timestep_safety: float = 0.5
     damping: float = 0.0
+    face_closure: bool = False
 
     def __post_init__(self):
         super().__post_init__()
@@ -149,7 +151,8 @@ class TiltingTable(BondedDiscs):
         t = self.rock["thickness"]
         joints.install_joints([(layout.main_joints(), self.main.material(self.joint_gap, t)),
                                (cross, self.base.material(self.joint_gap, t))],
-                              lo=(-1, -1), hi=(layout.toe_x + 1, 1), pieces=self.joint_pieces)
+                              lo=(-1, -1), hi=(layout.toe_x + 1, 1), pieces=self.joint_pieces,
+                              face_closure=self.face_closure)
         return layout
 
     def column_top_bands(self, layout: columns.ColumnLayout) -> dict[str, list[int]]:
@@ -239,7 +242,7 @@ def from_params(p: Any, thesis: Any) -> TiltingTable:
         block_length=thesis.BLOCK_LENGTH, design_plane_deg=thesis.DESIGN_PLANE_DEG, rmin=p.rmin, rmax=p.rmax,
         porosity=p.porosity, seed=p.seed, layout_seed=p.layout_seed, cut_rules=check_switch(p, "cut_rules"),
         joint_pieces=check_switch(p, "joint_pieces"), z_order=check_switch(p, "z_order"),
-        timestep_safety=p.timestep_safety, damping=p.damping)
+        timestep_safety=p.timestep_safety, damping=p.damping, face_closure=check_switch(p, "face_closure"))
 
 
 def built(model, laws: str, inputs: dict, protocol: tilt_run.TiltProtocol) -> dict[str, Any]:
