@@ -129,7 +129,8 @@ void JointSystem::closeFaces(SmoothJointPhys& phys, Body::id_t id1, Body::id_t i
 	Real      face1 = 0, face2 = 0;
 	if (!faceOf(id1, 2 * phys.jointSet + 1 - twoAhead, face1) || !faceOf(id2, 2 * phys.jointSet + twoAhead, face2)) return;
 	const Real closure = face1 + face2 - branch.dot(phys.jointNormal);
-	if (math::abs(closure) <= maxFaceClosure * rMin) phys.overlap = closure - mat.gap;
+	const Real limit   = faceClosureLimit * rMin;
+	phys.overlap       = math::max(-limit, math::min(limit, closure)) - mat.gap;
 }
 
 int JointSystem::listedSet(Body::id_t id1, Body::id_t id2) const

@@ -50,8 +50,11 @@ public:
 			"discs' faces (each disc's distance to the joint it faced at installation, ``faceDistance``) instead of stress-free. "
 			"Where a block's load sits on a few joint contacts, new contacts starting stress-free let it sink and turn as it "
 			"slides and turns (a block that turns presses its toe's face into the rock by its turn times its half-width, "
-			"which a contact starting stress-free does not resist). A closure beyond the smaller radius either way "
-			"(the faces are not the planes that meet, e.g. at a block's corner) is not used."))
+			"which a contact starting stress-free does not resist). The closure is held within ``faceClosureLimit``."))
+		((Real, faceClosureLimit, 0.05, , "Largest closure, either way, a new joint contact starts with (``faceClosure``), "
+			"× the smaller radius of its discs. A closure that large is interpenetration that stress-free contacts let "
+			"happen, or faces that are not the planes in contact (e.g. at a block's corner): starting a soft joint contact "
+			"at it releases its stored energy into the two discs at once."))
 		((vector<int>, faceBody, , Attr::triggerPostLoad, "Disc of each recorded face distance."))
 		((vector<int>, faceSide, , Attr::triggerPostLoad, "2 × joint set + 1 where the disc lies on the side its set's normal points to, + 0 on the other."))
 		((vector<Real>, faceDistance, , Attr::triggerPostLoad, "Distance [m] from the disc's centre to the nearest joint it faces on that side, at installation (``addCrossingPairs``: "
@@ -90,10 +93,7 @@ private:
 	int             blockOf(Body::id_t id) const { return size_t(id) < blockOfBody.size() ? blockOfBody[id] : -1; }
 	bool            differentBlocks(Body::id_t id1, Body::id_t id2) const { return blockOf(id1) >= 0 && blockOf(id2) >= 0 && blockOf(id1) != blockOf(id2); }
 	static uint64_t faceKey(Body::id_t id, int side) { return (uint64_t(uint32_t(id)) << 32) | uint32_t(side); }
-	// Beyond it (× the smaller radius) a closure measures faces that are not the planes in contact.
-	// A tenth was too tight: a 9 cm block turned by 0.2° already presses its toe that far in.
-	static constexpr Real maxFaceClosure = 1.0;
-	static uint64_t       key(Body::id_t a, Body::id_t b)
+	static uint64_t key(Body::id_t a, Body::id_t b)
 	{
 		if (a > b) std::swap(a, b);
 		return (uint64_t(uint32_t(a)) << 32) | uint32_t(b);

@@ -5,9 +5,10 @@ edge the foremost one lies against the margin (b − h tan φ)/2 within which a 
 reaction must fall; then every 0.01 s, then 0.05 s: its toe's slide, its turn, its joint contacts
 and the loaded ones' place behind the toe disc (docs/verification.md).
 
-    ./yade -x -n -j1 calibration/block_on_incline/band.py [rmax [bond_gap [phi [joint_stiffness_scale [ramp [face_closure]]]]]]
+    ./yade -x -n -j1 calibration/block_on_incline/band.py [rmax [bond_gap [phi [joint_stiffness_scale [ramp [face_closure [limit]]]]]]]
     # defaults: 0.004 m, 0.05 Rmin, 20 deg, 1, 0 s (tilted at once; else over ramp seconds, the clock
-    # starting when it is done), 0 (1: new joint contacts start with the faces' closure)
+    # starting when it is done), 0 (1: new joint contacts start with the faces' closure), JointSystem's
+    # faceClosureLimit
 """
 import math
 import sys
@@ -16,6 +17,7 @@ from yade import O
 from yade.wrapper import SmoothJointPhys
 
 from examples import params
+from toppling.build import joints
 from toppling.load import tilting
 from toppling.models import incline
 from toppling.run.steps import run_steps, steps_in
@@ -26,9 +28,12 @@ phi = float(sys.argv[3]) if len(sys.argv) > 3 else 20.0
 scale = float(sys.argv[4]) if len(sys.argv) > 4 else 1.0
 ramp = float(sys.argv[5]) if len(sys.argv) > 5 else 0.0
 face_closure = len(sys.argv) > 6 and sys.argv[6] == "1"
+limit = float(sys.argv[7]) if len(sys.argv) > 7 else None
 b, h = 0.09, 0.2
 block = incline.build(b, h, rmax / params.PACKING_R_RATIO, rmax, params.TABLE_5_6_ROCK, phi, bond_gap=bond_gap,
                       joint_stiffness_scale=scale, face_closure=face_closure)
+if limit is not None:
+    joints.rock_functor().joints.faceClosureLimit = limit
 incline.settle(0.05)
 members = set(block.block)
 toe_x = O.bodies[block.toe].state.pos[0]

@@ -220,6 +220,19 @@ def test_a_contact_remade_under_load_starts_with_its_faces_closure(empty_scene, 
     assert after == (pytest.approx(before, rel=0.02) if face_closure else pytest.approx(0, abs=0.02 * before))
 
 
+def test_a_closure_beyond_the_limit_starts_at_the_limit(empty_scene):
+    # The limit keeps a contact made across interpenetrated (or mismatched) faces from starting
+    # with a closure whose stored energy would throw its discs apart.
+    block_on_slab(friction_deg=20, face_closure=True)
+    system = joints.rock_functor().joints
+    system.faceClosureLimit = 1e-7  # × R: a twentieth of the closure the block's weight makes
+    i, j = system.pairId1[3], system.pairId2[3]
+    O.interactions.erase(i, j)
+    utils.createInteraction(i, j)
+    phys = O.interactions[i, j].phys
+    assert phys.overlap == pytest.approx(1e-7 * R, rel=1e-9)
+
+
 def test_bad_turn_interval_is_rejected():
     law = Law2_ScGeom_SmoothJointPhys_SmoothJoint()
     with pytest.raises(ValueError, match=r"Law2_ScGeom_SmoothJointPhys_SmoothJoint.turnInterval = 0 .*>= 1"):
