@@ -1,5 +1,6 @@
 #include "JointSystem.hpp"
 #include "ParallelBond.hpp"
+#include "RangeChecks.hpp"
 #include "SmoothJoint.hpp"
 #include <core/Omega.hpp>
 #include <core/Scene.hpp>
@@ -76,6 +77,13 @@ void JointSystem::assignBlocks(const boost::python::list& persistentSets)
 		if (b && dynamic_cast<const Sphere*>(b->shape.get())) blockOfBody[b->id] = blocks.blockId(toppling::xy(b->state->pos));
 }
 
+
+void JointSystem::postLoad(JointSystem&)
+{
+	toppling::require("JointSystem", "faceClosureLimit", faceClosureLimit, toppling::Range::nonNegative());
+	rebuildIndex();
+	rebuildFaceIndex();
+}
 
 void JointSystem::addPair(Body::id_t id1, Body::id_t id2, int set)
 {

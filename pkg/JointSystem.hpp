@@ -30,11 +30,7 @@ public:
 	boost::python::list crossingPairs(const JointSetGeometry& set, const Vector2r& lo, const Vector2r& hi) const;
 	boost::python::list addCrossingPairs(const JointSetGeometry& geometry, int set, const Vector2r& lo, const Vector2r& hi);
 	void                assignBlocks(const boost::python::list& persistentSets);
-	void                postLoad(JointSystem&)
-	{
-		rebuildIndex();
-		rebuildFaceIndex();
-	}
+	void                postLoad(JointSystem&);
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(JointSystem, Serializable,
 		"The joints of a scene: pairs of discs that straddle a joint segment (found when joints are installed, "
@@ -48,11 +44,11 @@ public:
 		((vector<int>, blockOfBody, , , "Block of each body (index = body id); -1 or missing: no block."))
 		((bool, faceClosure, false, , "A joint contact made after the joints were installed starts with the closure of the two "
 			"discs' faces (each disc's distance to the joint it faced at installation, ``faceDistance``) instead of stress-free. "
-			"Where a block's load sits on a few joint contacts, new contacts starting stress-free let it sink and turn as it "
-			"slides and turns (a block that turns presses its toe's face into the rock by its turn times its half-width, "
-			"which a contact starting stress-free does not resist). The closure is held within ``faceClosureLimit``."))
-		((Real, faceClosureLimit, 0.05, , "Largest closure, either way, a new joint contact starts with (``faceClosure``), "
-			"× the smaller radius of its discs. A closure that large is interpenetration that stress-free contacts let "
+			"Where a sliding block's load sits on a few joint contacts, each new contact starting stress-free lets the block "
+			"sink onto it, and a block that has turned presses its toe's face into the rock by its turn times its half-width, "
+			"which such a contact does not resist. The closure is held within ``faceClosureLimit``."))
+		((Real, faceClosureLimit, 0.2, Attr::triggerPostLoad, "Largest closure, either way, a new joint contact starts with (``faceClosure``), "
+			"× the smaller radius of its discs (>= 0). A closure that large is interpenetration that stress-free contacts let "
 			"happen, or faces that are not the planes in contact (e.g. at a block's corner): starting a soft joint contact "
 			"at it releases its stored energy into the two discs at once."))
 		((vector<int>, faceBody, , Attr::triggerPostLoad, "Disc of each recorded face distance."))

@@ -5,7 +5,7 @@ import numpy
 import pytest
 from lattice import R, material
 from yade import O, Quaternion, utils
-from yade.wrapper import JointSetGeometry, Law2_ScGeom_SmoothJointPhys_SmoothJoint, SmoothJointMat
+from yade.wrapper import JointSetGeometry, JointSystem, Law2_ScGeom_SmoothJointPhys_SmoothJoint, SmoothJointMat
 
 from toppling.build import bonding, engines, joints
 from toppling.build.discs import disc
@@ -231,6 +231,11 @@ def test_a_closure_beyond_the_limit_starts_at_the_limit(empty_scene):
     utils.createInteraction(i, j)
     phys = O.interactions[i, j].phys
     assert phys.overlap == pytest.approx(1e-7 * R, rel=1e-9)
+
+
+def test_a_negative_closure_limit_is_rejected():
+    with pytest.raises(ValueError, match=r"JointSystem.faceClosureLimit = -0.1 is invalid: it must be >= 0"):
+        JointSystem(faceClosureLimit=-0.1)
 
 
 def test_bad_turn_interval_is_rejected():
