@@ -10,18 +10,27 @@ namespace yade {
 
 YADE_PLUGIN((JointSystem));
 
+namespace {
+	// The real interactions whose centre-to-centre segment crosses one of `joints`.
+	std::vector<std::pair<Body::id_t, Body::id_t>> crossing(const std::vector<toppling::geometry::Segment>& joints)
+	{
+		const Scene&                                   sc = *Omega::instance().getScene();
+		std::vector<std::pair<Body::id_t, Body::id_t>> found;
+		for (const auto& I : *sc.interactions) {
+			if (!I->isReal()) continue;
+			const toppling::geometry::Vec2 p = toppling::xy((*sc.bodies)[I->getId1()]->state->pos);
+			const toppling::geometry::Vec2 q = toppling::xy((*sc.bodies)[I->getId2()]->state->pos);
+			if (toppling::geometry::crossedSegment(joints, p, q)) found.emplace_back(I->getId1(), I->getId2());
+		}
+		return found;
+	}
+} // namespace
+
 boost::python::list JointSystem::crossingPairs(const JointSetGeometry& set, const Vector2r& lo, const Vector2r& hi) const
 {
-	const std::vector<std::vector<toppling::geometry::Segment>> joints { set.toGeometry().segments(toppling::box(lo, hi)) };
-	const Scene&                                                sc = *Omega::instance().getScene();
-	boost::python::list                                         out;
-	for (const auto& I : *sc.interactions) {
-		if (!I->isReal()) continue;
-		const Vector3r& p = (*sc.bodies)[I->getId1()]->state->pos;
-		const Vector3r& q = (*sc.bodies)[I->getId2()]->state->pos;
-		if (toppling::geometry::crossedSet(joints, toppling::xy(p), toppling::xy(q)) >= 0)
-			out.append(boost::python::make_tuple(I->getId1(), I->getId2()));
-	}
+	boost::python::list out;
+	for (const auto& [id1, id2] : crossing(set.toGeometry().segments(toppling::box(lo, hi))))
+		out.append(boost::python::make_tuple(id1, id2));
 	return out;
 }
 
@@ -36,13 +45,9 @@ boost::python::list JointSystem::addCrossingPairs(const JointSetGeometry& geomet
 	if (!mat) throw std::invalid_argument("JointSystem.addCrossingPairs: jointMaterials[" + std::to_string(set) + "] is not a SmoothJointMat");
 	const std::vector<toppling::geometry::Segment> joints = geometry.toGeometry().segments(toppling::box(lo, hi));
 	boost::python::list                            out;
-	for (const auto& I : *sc.interactions) {
-		if (!I->isReal()) continue;
-		const toppling::geometry::Vec2 p = toppling::xy((*sc.bodies)[I->getId1()]->state->pos);
-		const toppling::geometry::Vec2 q = toppling::xy((*sc.bodies)[I->getId2()]->state->pos);
-		if (!toppling::geometry::crossedSegment(joints, p, q)) continue;
-		addPair(I->getId1(), I->getId2(), set);
-		out.append(boost::python::make_tuple(I->getId1(), I->getId2()));
+	for (const auto& [id1, id2] : crossing(joints)) {
+		addPair(id1, id2, set);
+		out.append(boost::python::make_tuple(id1, id2));
 	}
 	recordFaces(joints, set, toppling::xy(mat->normal.normalized()));
 	return out;

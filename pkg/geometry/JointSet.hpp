@@ -168,14 +168,6 @@ namespace toppling {
 			return nearest;
 		}
 
-		// The first set with a joint segment crossed by the segment p-q, or -1.
-		inline int crossedSet(const std::vector<std::vector<Segment>>& jointsBySet, Vec2 p, Vec2 q)
-		{
-			for (size_t i = 0; i < jointsBySet.size(); ++i)
-				if (crossedSegment(jointsBySet[i], p, q)) return int(i);
-			return -1;
-		}
-
 	} // namespace geometry
 } // namespace toppling
 } // namespace yade

@@ -158,14 +158,6 @@ TEST(BlockIndex, TwoSetsMakeRectangularBlocks)
 	EXPECT_NE(blocks.blockId({ 0.5, 2.1 }), a);
 }
 
-TEST(CrossedSet, FindsTheJointBetweenTwoPoints)
-{
-	const std::vector<std::vector<Segment>> sets { { { { 0, 1 }, { 10, 1 } } }, { { { 5, 0 }, { 5, 10 } } } };
-	EXPECT_EQ(crossedSet(sets, { 1, 0.5 }, { 1, 1.5 }), 0);
-	EXPECT_EQ(crossedSet(sets, { 4, 3 }, { 6, 3 }), 1);
-	EXPECT_EQ(crossedSet(sets, { 1, 2 }, { 2, 3 }), -1);
-}
-
 TEST(CrossedSegment, IsTheJointTheCentreLineCrosses)
 {
 	const std::vector<Segment> joints { { { 0, 1 }, { 10, 1 } }, { { 0, 2 }, { 10, 2 } } };
