@@ -74,17 +74,13 @@ def value(summary: dict, key: str):
 COST = ("rmin", "rmax", "seed", "discs", "steps", "wall_time", "failed_in_first_stage")
 
 
-def record_path(model: str) -> str:
-    return f"{HERE}/records/speed_accuracy_{model}.csv"
-
-
 def record(model: str) -> dict[str, dict]:
     """The model's record with the finished runs in results/ added: every run, by name."""
     def row(name: str, s: dict) -> dict:
         return {"run": name, **{k: s["inputs"][k] for k in ("rmin", "rmax", "seed")},
                 **{k: value(s, k) for k in COST[3:]}, **{k: value(s, k) for k, _ in ANSWERS[model]},
                 "commit": records.commit(s)}
-    return records.update(record_path(model), f"{RESULTS}/{model}", row, COST + tuple(k for k, _ in ANSWERS[model]))
+    return records.update(f"{HERE}/records/speed_accuracy_{model}.csv", f"{RESULTS}/{model}", row, COST + tuple(k for k, _ in ANSWERS[model]))
 
 
 def by_size(model: str) -> list[dict]:

@@ -108,7 +108,7 @@ void JointSystem::rebuildIndex()
 
 void JointSystem::recordFace(Body::id_t id, int side, Real distance)
 {
-	// A disc between two joints of one set closer than its diameter faces the nearer one.
+	// A set installed again keeps each disc's nearer face.
 	const auto it = faceIndex.find(faceKey(id, side));
 	if (it != faceIndex.end()) {
 		faceDistance[it->second] = math::min(faceDistance[it->second], distance);
