@@ -105,7 +105,6 @@ EQUIVALENT_SLOPE = dict(
     merged_pair=0,
     joints_into_foundation=0, joint_gap=TABLE_5_6["gap"], z_order=0,  # joint_gap [m]: the joints' aperture when installed
     face_closure=0,  # as the tilting table's
-    joint_preload=0,  # 1: the joint contacts start with the forces the settled rock's bonds carried across them
     timestep_safety=0.8, damping=0.0, settle_damping=0.7,
     chunk=0.02, rest_speed=1e-3, fail_displacement=0.05, max_stage_time=2.0, fail_columns=2,  # s, m/s, m, s, -
     rest_window=0.2,  # [s] a standing slope rings without local damping: its speed is judged over this window
@@ -135,13 +134,13 @@ GALANDROOD_SHAPE = dict(height=FIG_5_44["height"], joint_dip_deg=FIG_5_44["layer
                         top_deg=FIG_5_44["top_deg"], spacing=FIG_5_44["thickness"], columns=80)
 GALANDROOD = dict(**TABLE_5_14_DISCS, columns=GALANDROOD_SHAPE["columns"], porosity=0.18, seed=1, joint_gap=0.0,
                   joint_kn=TABLE_5_15["kn"], joint_ks=TABLE_5_15["ks"], joint_friction=TABLE_5_15["friction"],
-                  joints_into_foundation=1, joint_preload=0,
+                  joints_into_foundation=1,
                   reduction_factor=TABLE_5_16_FACTOR,
                   timestep_safety=0.8, damping=0.0, settle_damping=0.7,
                   chunk=0.05, rest_speed=1e-3, fail_displacement=0.5, max_stage_time=2.0, fail_columns=2,
                   post_failure_time=0.2, resume=-1, checkpoint_every=600.0, max_wall_time=0.0, exact_resume=0)
 # m, m, m (Table 5-14), -, -, -; joint_gap [m]: 0, Table 5-15's 1 cm read as the distance within which discs across a joint are paired (our bond
-# gap, 6 cm, pairs them), not as an aperture; joint_kn, joint_ks [N/m3], joint_friction [-]; joints_into_foundation 1: the layers cut down to the held base, 0: rooted on the plane through the toe; joint_preload as the equivalent slope's; s, m/s, m, s, -, s, -, wall s x2
+# gap, 6 cm, pairs them), not as an aperture; joint_kn, joint_ks [N/m3], joint_friction [-]; joints_into_foundation 1: the layers cut down to the held base, 0: rooted on the plane through the toe; s, m/s, m, s, -, s, -, wall s x2
 
 # ---- §5.4.1: Ihlara Valley (Tables 5-12, 5-13; Figs 5-33 ... 5-37) ----
 _IHLARA_COMMON = dict(normalDamping=0.25, bondNormalDamping=0.2, thickness=1.0)  # per metre of valley
@@ -165,7 +164,6 @@ IHLARA_BACK_ANALYSIS = 1.27  # the weathered tuff's bond strengths divided by it
 IHLARA_SECTION = dict(width=38.0, tuff=10.0, ignimbrite=25.0, ash=5.0, face_x=31.5, column_width=3.5,
                       weathered_depth=2.5)  # [m]
 IHLARA = dict(case="weathered", weathered_strength_factor=1.0, joint_gap=TABLE_5_13["gap"], joint_shear_stiffness=0.0,
-              joint_preload=0,  # 1: the joint contacts start with the forces the settled rock's bonds carried across them
               porosity=0.18, seed=1, timestep_safety=0.8,
               damping=0.0, settle_damping=0.7, chunk=0.1, rest_speed=0.01, fail_displacement=0.5,
               max_stage_time=10.0, fail_columns=1, post_failure_time=5.0, resume=-1, checkpoint_every=600.0,

@@ -4,11 +4,10 @@ force across the first vertical joint, the bedding's normal force under column 1
 it, the friction it can give), column 1's weight, and the median displacement of its top and foot (loose discs aside), and at the end its
 discs' median displacement by height.
 With ``alone`` the columns behind it are taken away before the cliff settles (nothing pushes it);
-with ``preload`` the joints start with the forces the settled rock carried across them; with
-``fixed`` the joint normals keep their installed direction (Law2's turnInterval out of reach); with
+with ``fixed`` the joint normals keep their installed direction (Law2's turnInterval out of reach); with
 ``closure`` joint contacts made later start with their faces' closure (JointSystem.faceClosure).
 
-    ./yade -x -n -j1 calibration/ihlara/front_column.py [case [alone] [preload] [fixed] [closure] [reports]]   # case: intact (default), weathered, eroded
+    ./yade -x -n -j1 calibration/ihlara/front_column.py [case [alone] [fixed] [closure] [reports]]   # case: intact (default), weathered, eroded
 """
 import math
 import statistics
@@ -24,10 +23,8 @@ from toppling.models import layered_cliff
 from toppling.run.steps import run_steps, steps_in
 
 case = sys.argv[1] if len(sys.argv) > 1 else "intact"
-alone, preload, fixed, closure = ("alone" in sys.argv[2:], "preload" in sys.argv[2:], "fixed" in sys.argv[2:],
-                                  "closure" in sys.argv[2:])
-cliff = layered_cliff.ihlara_from_params(SimpleNamespace(**{**params.IHLARA, "case": case, "joint_preload": int(preload)}),
-                                         params)
+alone, fixed, closure = "alone" in sys.argv[2:], "fixed" in sys.argv[2:], "closure" in sys.argv[2:]
+cliff = layered_cliff.ihlara_from_params(SimpleNamespace(**{**params.IHLARA, "case": case}), params)
 face, width = cliff.face_x, cliff.column_width
 column_1 = (face - width, face)
 

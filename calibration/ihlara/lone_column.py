@@ -1,10 +1,14 @@
-"""Does one Ihlara column stand alone on a rigid base? Ignimbrite (Table 5-12) 3.5 m wide and
-``height`` m tall on fixed tuff discs, a bedding joint of Table 5-13 between them, bonded and settled
-with local damping 0.7 (``soft`` 1: on Table 5-12's tuff, 10 m deep and bonded, as the cliff's foundation, and the top 5 m of the column ash), jointed, then run undamped; prints every 0.1 s the column's tilt and the
-median displacement of its top discs. ``turn`` 0 keeps the joint normals where they were installed
-(Law2's turnInterval out of reach); ``ks`` N/m³ overrides Table 5-13's shear stiffness.
+"""Does one Ihlara column stand alone? Ignimbrite (Table 5-12) 3.5 m wide and ``height`` m tall on
+tuff, a bedding joint of Table 5-13 between them; bonded and settled with local damping 0.7, jointed,
+then run undamped, printing every 0.1 s the column's tilt (its top discs' median x against its
+foot's) and their median displacement. Arguments, each 0 or 1 unless said:
+``turn`` 0 keeps the joint normals where they were installed (Law2's turnInterval out of reach);
+``ks`` [N/m³] replaces Table 5-13's shear stiffness (0: Table 5-13's); ``soft``: the tuff 10 m deep,
+bonded and held at its base and sides, the column's top 5 m ash (as the cliff's), else a fixed tuff
+slab 2.5 m deep; ``edge``: the bedding ends at the column's face; ``placed``: the column stands where
+the cliff's column 1 does, 28 m of tuff behind it and 6.5 m in front, the front side free.
 
-    ./yade -x -n -j1 calibration/ihlara/lone_column.py [height [turn [ks [preload [soft [edge [placed]]]]]]]
+    ./yade -x -n -j1 calibration/ihlara/lone_column.py [height [turn [ks [soft [edge [placed]]]]]]
 """
 import math
 import statistics
@@ -23,10 +27,8 @@ height = float(sys.argv[1]) if len(sys.argv) > 1 else 30.0
 turn = sys.argv[2] != "0" if len(sys.argv) > 2 else True
 kn, ks, mu = params.TABLE_5_13["bedding"]
 ks = float(sys.argv[3]) if len(sys.argv) > 3 and float(sys.argv[3]) > 0 else ks
-preload = len(sys.argv) > 4 and sys.argv[4] == "1"
-soft = len(sys.argv) > 5 and sys.argv[5] == "1"  # the tuff 10 m deep, 38 m wide and bonded, held at its base and sides
+soft, edge, placed = (len(sys.argv) > k and sys.argv[k] == "1" for k in (4, 5, 6))
 discs = params.TABLE_5_12_DISCS
-placed = len(sys.argv) > 7 and sys.argv[7] == "1"  # where the cliff's column 1 stands: 28 m of tuff behind, 6.5 m in front, free there
 width, depth = 3.5, (10.0 if soft else 2.5)
 behind, ahead = (28.0, 6.5) if placed else ((17.0, 17.0) if soft else (2.0, 2.0))
 
@@ -47,10 +49,9 @@ else:
     boundary.fix([b for b in base if b in ids], "xy")
 run_steps(steps_in(0.5))
 engines.set_local_damping(0.0)
-edge = len(sys.argv) > 6 and sys.argv[6] == "1"  # the bedding ends at the column's face, as the cliff's at its face
 bedding = JointSetGeometry(dip=0, segmentStarts=[(-behind, 0.0)], segmentEnds=[(width if edge else width + ahead, 0.0)])
 joints.install_joints([(bedding, JointMaterial(kn, mu, ks).material(params.TABLE_5_13["gap"], 1.0))],
-                      lo=(-behind - 1, -depth - 1), hi=(width + ahead + 1, height + 1), preload=preload)
+                      lo=(-behind - 1, -depth - 1), hi=(width + ahead + 1, height + 1))
 if not turn:
     engines.functor(Law2_ScGeom_SmoothJointPhys_SmoothJoint).turnInterval = 2**30
 members = [b for b in column if b in ids]
@@ -65,8 +66,8 @@ def median_x(group: list[int]) -> float:
 
 
 print(f"lone column {width} x {height} m, {len(members)} discs, joint kn {kn:g} ks {ks:g} N/m3, mu {mu}, "
-      f"normals {'turn' if turn else 'fixed'}, preload {preload}", flush=True)
-for k in range(15):
+      f"normals {'turn' if turn else 'fixed'}", flush=True)
+for _ in range(15):
     run_steps(steps_in(0.1))
     tilt = math.degrees(math.atan2(median_x(top) - median_x(low), height - 1.0))
     print(f"t {O.time:.2f} s: tilt {tilt:+.3f}°, top x {1e3 * median_x(top):+.1f} mm, foot x {1e3 * median_x(low):+.1f} mm",

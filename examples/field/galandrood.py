@@ -31,7 +31,7 @@ slope = equivalent_slope.EquivalentSlope(
     main=joint, base=joint, base_joints=[], joints_into_foundation=bool(table.joints_into_foundation),
     joint_gap=table.joint_gap, bond_gap=table.bond_gap,
     rmin=table.rmin, rmax=table.rmax, porosity=table.porosity, seed=table.seed, timestep_safety=table.timestep_safety,
-    damping=table.damping, joint_preload=bool(table.joint_preload))
+    damping=table.damping)
 protocol = equivalent_slope.protocol(table, slope)
 run = tilting_table.start(slope, protocol, criteria, output.table_inputs(table), table.out, table.resume)
 run.run()

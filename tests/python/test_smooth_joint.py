@@ -18,15 +18,12 @@ Y_JOINT = math.sqrt(3) * R * (ROWS_SLAB - 0.5)  # between the slab's top row and
 
 
 def block_on_slab(friction_deg: float, smooth: bool = True, segment: bool = False, pieces: bool = True,
-                  loaded: bool = False, face_closure: bool = False, settled: bool = False,
-                  preload: bool = False):
+                  loaded: bool = False, face_closure: bool = False):
     """Fixed slab of discs, bonded block of discs on it, a horizontal joint between: a smooth
     joint (persistent, or with ``segment`` one explicit segment), or (smooth=False) plain disc
     contacts of the same friction. ``loaded``: the bonded scene saved and loaded before the
     joint is installed (as from a checkpoint or a shared settled rock). ``face_closure``: new
-    joint contacts start with their faces' closure. ``settled``: the bonded block settles before
-    the joint is installed, not after; ``preload``: the joint contacts start with the forces the
-    bonds they replace carried."""
+    joint contacts start with their faces' closure."""
     rock = material(frictionAngle=math.radians(30 if smooth else friction_deg))
     block = []
     for j in range(ROWS_SLAB + ROWS_BLOCK):
@@ -43,8 +40,6 @@ def block_on_slab(friction_deg: float, smooth: bool = True, segment: bool = Fals
         run_steps(2000)
         return block, None
     bonding.bond_within_gap(1e-6 * R)
-    if settled:
-        run_steps(2000)
     if loaded:
         O.saveTmp("bonded")
         O.loadTmp("bonded")
@@ -53,9 +48,8 @@ def block_on_slab(friction_deg: float, smooth: bool = True, segment: bool = Fals
     mechanics = SmoothJointMat(normalStiffness=rock.bondYoung / (2 * R),
                                shearStiffness=rock.bondYoung / (2 * R), frictionAngle=math.radians(friction_deg))
     system = joints.install_joints([(joint, mechanics)], lo=(-R, -R), hi=(2 * R * COLS, 10 * R * ROWS_BLOCK),
-                                   pieces=pieces, face_closure=face_closure, preload=preload)
-    if not settled:
-        run_steps(2000)  # settle on the joint, damped
+                                   pieces=pieces, face_closure=face_closure)
+    run_steps(2000)  # settle on the joint, damped
     return block, system
 
 
@@ -224,36 +218,6 @@ def test_a_contact_remade_under_load_starts_with_its_faces_closure(empty_scene, 
     after = O.interactions[i, j].phys.jointNormalForce
     assert before > 0
     assert after == (pytest.approx(before, rel=0.02) if face_closure else pytest.approx(0, abs=0.02 * before))
-
-
-def mean_y(ids) -> float:
-    return sum(O.bodies[i].state.pos[1] for i in ids) / len(ids)
-
-
-def block_weight(block) -> float:
-    return G * sum(O.bodies[b].state.mass for b in block)
-
-
-def test_preloaded_joint_contacts_carry_the_settled_blocks_weight(empty_scene):
-    # Installed in a rock settled under gravity, the joint takes over what its bonds carried: the
-    # block's weight across the joint at once, not after the block has sunk onto stress-free contacts.
-    block, system = block_on_slab(friction_deg=20, settled=True, preload=True)
-    forces = [O.interactions[i, j].phys.jointNormalForce for i, j in zip(system.pairId1, system.pairId2)]
-    assert min(forces) > 0
-    assert sum(forces) == pytest.approx(block_weight(block), rel=0.01)
-
-
-@pytest.mark.parametrize("preload", [True, False])
-def test_a_preloaded_joint_holds_the_block_where_it_settled(empty_scene, preload):
-    # Stress-free contacts must close by the weight over their stiffness, W / Σ k_n A, before they
-    # carry it; preloaded ones start closed, and the block stays where it settled.
-    block, system = block_on_slab(friction_deg=20, settled=True, preload=preload)
-    stiffness = sum(O.interactions[i, j].phys.kn for i, j in zip(system.pairId1, system.pairId2))
-    closure = block_weight(block) / stiffness
-    y0 = mean_y(block)
-    run_steps(2000)
-    sunk = y0 - mean_y(block)
-    assert sunk == (pytest.approx(0, abs=0.05 * closure) if preload else pytest.approx(closure, rel=0.1))
 
 
 def test_a_closure_beyond_the_limit_starts_at_the_limit(empty_scene):

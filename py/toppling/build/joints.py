@@ -5,7 +5,6 @@ import math
 from typing import Sequence
 
 from yade import O, utils
-from yade.minieigenHP import Vector3
 from yade.wrapper import (Ip2_ParallelBondMat_ParallelBondMat_ParallelBondPhys,
                           JointSetGeometry, JointSystem, SmoothJointMat, SmoothJointPhys)
 
@@ -46,7 +45,7 @@ def check_segments_inside(geometry: JointSetGeometry, lo, hi) -> None:
 
 
 def install_joints(sets: Sequence[tuple[JointSetGeometry, SmoothJointMat]], lo, hi,
-                   pieces: bool = True, face_closure: bool = False, preload: bool = False) -> JointSystem:
+                   pieces: bool = True, face_closure: bool = False) -> JointSystem:
     """Install joint sets (geometry, mechanics) in the current scene, within the box lo..hi.
 
     Every interaction whose centre-to-centre segment crosses a joint loses its bond and gets
@@ -56,10 +55,7 @@ def install_joints(sets: Sequence[tuple[JointSetGeometry, SmoothJointMat]], lo, 
     persistent set, which leaves a block that slides along a joint of explicit segments or
     with rock bridges to make plain, interlocking disc contacts with the rock it slides over.
     With ``face_closure`` a joint contact made later starts with the closure of the two discs'
-    faces instead of stress-free (:yref:`JointSystem.faceClosure`). With ``preload`` each joint
-    contact made here starts with the force its pair carried (``carry``) instead of stress-free, so
-    a rock settled under gravity keeps the joints' confinement and friction at the step they are
-    installed. Returns the scene's JointSystem.
+    faces instead of stress-free (:yref:`JointSystem.faceClosure`). Returns the scene's JointSystem.
     """
     ip2 = rock_functor()
     system = ip2.joints if ip2.joints is not None else JointSystem()
@@ -72,42 +68,13 @@ def install_joints(sets: Sequence[tuple[JointSetGeometry, SmoothJointMat]], lo, 
     system.faceClosure = face_closure
     system.assignBlocks([g for g, _ in sets if is_persistent(g)])
     ip2.joints = system
-    carried = {(i, j): force_on(i, j) for i, j in pairs} if preload else {}
     for i, j in pairs:  # the Ip2 now makes them smooth joints
         O.interactions.erase(i, j)
-        joint = utils.createInteraction(i, j)
-        if (i, j) in carried:
-            carry(joint, carried[(i, j)] if joint.id2 == j else -carried[(i, j)])
+        utils.createInteraction(i, j)
     if pieces:
         assign_pieces(system)
     limit_timestep()
     return system
-
-
-def force_on(i: int, j: int) -> Vector3:
-    """The force the interaction of discs i and j exerts on j now (bond, contact and dashpot;
-    zero if they do not interact)."""
-    interaction = O.interactions[i, j]
-    if not interaction.isReal:
-        return Vector3.Zero
-    force = interaction.phys.normalForce + interaction.phys.shearForce  # on the interaction's body 2
-    return force if interaction.id2 == j else -force
-
-
-def carry(joint, force: Vector3) -> None:
-    """Start the smooth-joint interaction ``joint`` with ``force`` on its body 2: its compression
-    along the joint normal closes the joint (aperture taken up), its shear along the joint plane
-    is kept up to the contact's strength. Tension is not carried: the contact starts stress-free."""
-    phys = joint.phys
-    n = phys.jointNormal
-    normal = force.dot(n)
-    if normal <= 0:
-        return
-    limit = phys.tangensOfFrictionAngle * normal + (phys.cohesion * phys.area if phys.bondState == 1 else 0.0)
-    shear = force.dot(Vector3(-n[1], n[0], 0))  # along z × n, the law's shear direction
-    phys.overlap = normal / phys.kn
-    phys.jointNormalForce = normal
-    phys.jointShearForce = max(-limit, min(limit, shear))
 
 
 def trace(centre, normal, half: float) -> tuple[tuple[float, float], tuple[float, float]]:

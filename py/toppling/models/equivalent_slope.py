@@ -124,8 +124,7 @@ class EquivalentSlope(BondedDiscs):
     packed at ``porosity`` with ``seed``. With
     ``joints_into_foundation`` the main joints run on down to the horizontal base (the other
     reading of the thesis' foundation: the flexural columns rooted at the held base, not at the
-    table plane). ``joint_preload``: the joint contacts start with the forces the settled rock's
-    bonds carried across them (``joints.install_joints``' ``preload``)."""
+    table plane)."""
     shape: SlopeShape
     rock: dict[str, Any]
     main: JointMaterial
@@ -138,7 +137,6 @@ class EquivalentSlope(BondedDiscs):
     timestep_safety: float = 0.5
     damping: float = 0.0
     face_closure: bool = False
-    joint_preload: bool = False
     layout: columns.ColumnLayout = field(init=False)
 
     def __post_init__(self):
@@ -215,7 +213,7 @@ class EquivalentSlope(BondedDiscs):
         sets = [(self.main_joints(), self.main.material(self.joint_gap, t))]
         if self.base_joints:  # a set without segments would be one persistent joint along the table plane
             sets.append((self.base_joint_set(), self.base.material(self.joint_gap, t)))
-        joints.install_joints(sets, lo=lo, hi=hi, face_closure=self.face_closure, preload=self.joint_preload)
+        joints.install_joints(sets, lo=lo, hi=hi, face_closure=self.face_closure)
         print(f"joints installed: {len(self.layout.heights) - 1} main, {len(self.base_joints)} base", flush=True)
 
     def column_top_bands(self, layout: columns.ColumnLayout) -> dict[str, list[int]]:
@@ -229,7 +227,7 @@ class EquivalentSlope(BondedDiscs):
 
 # from_params' parameters that act only once the rock has settled (tilt_run.settled_store)
 JOINT_INPUTS = ("base_joints", "base_plane_deg", "merged_pair", "main_joint_friction", "joint_stiffness_scale",
-                "joint_gap", "joints_into_foundation", "face_closure", "joint_preload", "model")
+                "joint_gap", "joints_into_foundation", "face_closure", "model")
 
 
 def from_params(p: Any, thesis: Any) -> EquivalentSlope:
@@ -245,7 +243,6 @@ def from_params(p: Any, thesis: Any) -> EquivalentSlope:
     require("joint_stiffness_scale", p.joint_stiffness_scale, "(0, 1]")
     require("joint_gap", p.joint_gap, "[0, inf)")
     require("face_closure", p.face_closure, "whole [0, 1]")
-    require("joint_preload", p.joint_preload, "whole [0, 1]")
     rock = dict(thesis.TABLE_5_5)
     rock["bondTensileStrength"] *= p.strength_factor
     rock["bondCohesion"] *= p.strength_factor
@@ -260,8 +257,7 @@ def from_params(p: Any, thesis: Any) -> EquivalentSlope:
         joint_gap=p.joint_gap, bond_gap=thesis.TABLE_5_5_BOND_GAP, rmin=p.rmin, rmax=p.rmax, porosity=p.porosity,
         seed=p.seed, base_joints=base, base_plane_deg=p.base_plane_deg, merged_pair=p.merged_pair,
         joints_into_foundation=bool(p.joints_into_foundation), z_order=bool(p.z_order),
-        timestep_safety=p.timestep_safety, damping=p.damping, face_closure=bool(p.face_closure),
-        joint_preload=bool(p.joint_preload))
+        timestep_safety=p.timestep_safety, damping=p.damping, face_closure=bool(p.face_closure))
 
 
 def protocol(p: Any, model: EquivalentSlope) -> tilt_run.TiltProtocol:

@@ -40,8 +40,7 @@ class LayeredCliff(BondedDiscs):
     """``width`` × (``foundation`` below the bedding, ``layers`` above it) [m]; the cliff's face at
     ``face_x``, the ground in front of it at y = 0; ``column_width`` [m] columns from the face
     back to x = 0, cut by ``vertical`` joints from the bedding to the top and standing on the
-    ``bedding`` joint; ``zone`` at the toe; its discs as ``BondedDiscs``. ``joint_preload``: the
-    joint contacts start with the forces the settled rock's bonds carried across them."""
+    ``bedding`` joint; ``zone`` at the toe; its discs as ``BondedDiscs``."""
     width: float
     foundation: Layer  # its ``top`` is its thickness below the bedding
     layers: list[Layer]
@@ -52,7 +51,6 @@ class LayeredCliff(BondedDiscs):
     zone: Zone | None
     timestep_safety: float = 0.5
     damping: float = 0.0
-    joint_preload: bool = False
     layout: columns.ColumnLayout = None
 
     def __post_init__(self):
@@ -114,8 +112,7 @@ class LayeredCliff(BondedDiscs):
         bedding = JointSetGeometry(dip=0, segmentStarts=[(0.0, 0.0)], segmentEnds=[(self.face_x, 0.0)])
         lo, hi = (-1.0, -self.foundation.top - 1), (self.width + 1, self.height + 1)
         joints.install_joints([(vertical, self.vertical.material(self.joint_gap, t)),
-                               (bedding, self.bedding.material(self.joint_gap, t))], lo=lo, hi=hi,
-                              preload=self.joint_preload)
+                               (bedding, self.bedding.material(self.joint_gap, t))], lo=lo, hi=hi)
         print(f"joints installed: {len(xs)} vertical, 1 bedding", flush=True)
 
     def column_top_bands(self, layout: columns.ColumnLayout) -> dict[str, list[int]]:
@@ -125,15 +122,13 @@ class LayeredCliff(BondedDiscs):
 def ihlara_from_params(p: Any, thesis: Any) -> LayeredCliff:
     """The Ihlara Valley's cliff (thesis §5.4.1) from a parameter set ``p`` (``case``: 'intact',
     'weathered' or 'eroded'; ``weathered_strength_factor`` divides the weathered tuff's bond
-    strengths; ``joint_gap`` [m]; ``joint_shear_stiffness`` [N/m³], 0: Table 5-13's; ``joint_preload``
-    (0 or 1: ``LayeredCliff``'s); ``porosity``,
+    strengths; ``joint_gap`` [m]; ``joint_shear_stiffness`` [N/m³], 0: Table 5-13's; ``porosity``,
     ``seed``, ``timestep_safety``, ``damping``) and the thesis' numbers (``thesis``: examples/params.py)."""
     if p.case not in ("intact", "weathered", "eroded"):
         raise ValueError(f"case = {p.case!r} is invalid: it must be 'intact', 'weathered' or 'eroded'")
     require("weathered_strength_factor", p.weathered_strength_factor, "(0, inf)")
     require("joint_gap", p.joint_gap, "[0, inf)")
     require("joint_shear_stiffness", p.joint_shear_stiffness, "[0, inf)")
-    require("joint_preload", p.joint_preload, "whole [0, 1]")
     section, rocks, discs, joint = thesis.IHLARA_SECTION, thesis.TABLE_5_12, thesis.TABLE_5_12_DISCS, thesis.TABLE_5_13
     weathered = dict(rocks["weathered"])
     for key in ("bondTensileStrength", "bondCohesion"):
@@ -148,8 +143,7 @@ def ihlara_from_params(p: Any, thesis: Any) -> LayeredCliff:
         vertical=JointMaterial(kn, joint["vertical"][2], ks), bedding=JointMaterial(kn, joint["bedding"][2], ks),
         zone=None if p.case == "intact" else Zone(box, weathered if p.case == "weathered" else None),
         joint_gap=p.joint_gap, bond_gap=discs["bond_gap"], rmin=discs["rmin"], rmax=discs["rmax"],
-        porosity=p.porosity, seed=p.seed, timestep_safety=p.timestep_safety, damping=p.damping,
-        joint_preload=bool(p.joint_preload))
+        porosity=p.porosity, seed=p.seed, timestep_safety=p.timestep_safety, damping=p.damping)
 
 
 def _inside(box: tuple[float, float, float, float], x: float, y: float) -> bool:

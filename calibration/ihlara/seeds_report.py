@@ -1,0 +1,48 @@
+"""The Ihlara cliff over five packings (examples/field/ihlara_seeds.table): each finished run of
+the folder added to the record (records/seed_runs.csv, ``toppling.io.records``), then per case how
+many packings fail and which columns topple, beside the thesis (docs/cases/ihlara.md).
+
+    source scripts/env.sh; /usr/bin/python3 calibration/ihlara/seeds_report.py [results/ihlara_seeds]
+"""
+import os
+import statistics
+import sys
+from typing import Any
+
+from toppling.io import records
+
+RECORD = os.path.join(os.path.dirname(__file__), "records", "seed_runs.csv")
+NUMBERS = ("seed", "weathered_strength_factor", "failed", "toppling_columns", "moved_columns", "tensile_breaks",
+           "shear_breaks", "simulated_time", "steps", "wall_time")
+THESIS = {"intact": "stands until the tuff weathers (§5.4.1.2)",
+          "weathered": "column 1 topples; column 2 moves but stands (Fig 5-38)",
+          "eroded": "columns 1-3 topple (Fig 5-40)",
+          "back_analysis": "column 1 tilts back, then the columns behind fail (Fig 5-42)"}
+
+
+def row(name: str, s: dict[str, Any]) -> dict[str, Any]:
+    zones = s.get("zones") or {}
+    toppling = [label for label, zone in zones.items() if zone == "toppling"]
+    return {"run": name, "seed": s["inputs"]["seed"], "case": s["inputs"]["case"],
+            "weathered_strength_factor": s["inputs"]["weathered_strength_factor"], "failed": int(bool(s["failed"])),
+            "toppling": " ".join(toppling), "toppling_columns": len(toppling),
+            "moved_columns": sum(zone not in ("no-movement", "empty") for zone in zones.values()),
+            **{k: s.get(k) for k in ("tensile_breaks", "shear_breaks", "simulated_time", "steps", "wall_time")},
+            "commit": records.commit(s)}
+
+
+def report(rows: dict[str, dict[str, Any]]) -> None:
+    print("| case | packings that fail | columns toppling, by seed | breaks (tensile / shear), mean | wall (s), mean | thesis |\n"
+          "|---|---|---|---|---|---|")
+    for case, thesis in THESIS.items():
+        runs = sorted((r for name, r in rows.items() if name.rsplit("_s", 1)[0] == case), key=lambda r: r["seed"])
+        if not runs:
+            continue
+        toppling = ", ".join(f"{int(r['seed'])}: {r['toppling'] or '-'}" for r in runs)
+        mean = lambda key: statistics.mean(r[key] for r in runs)  # noqa: E731
+        print(f"| {case} | {sum(r['failed'] for r in runs):.0f} of {len(runs)} | {toppling} | "
+              f"{mean('tensile_breaks'):.0f} / {mean('shear_breaks'):.0f} | {mean('wall_time'):.0f} | {thesis} |")
+
+
+if __name__ == "__main__":
+    report(records.update(RECORD, sys.argv[1] if len(sys.argv) > 1 else "results/ihlara_seeds", row, NUMBERS))
