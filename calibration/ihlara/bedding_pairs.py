@@ -26,5 +26,6 @@ for i in O.interactions:
 for k, (pairs, (lo, hi)) in enumerate(zip(under, spans), start=1):
     xs = sorted(pairs)
     gaps = [b - a for a, b in zip(xs, xs[1:])]
-    print(f"seed {seed}, column {k}: {len(xs)} pairs" + (f", the frontmost {hi - xs[-1]:.2f} m behind its face, the "
-          f"backmost {xs[0] - lo:.2f} m in front of its back, widest gap between {max(gaps, default=0):.2f} m" if xs else ""))
+    where = (f", the frontmost {hi - xs[-1]:.2f} m behind its face, the backmost {xs[0] - lo:.2f} m in front of its "
+             f"back, widest gap between {max(gaps, default=0):.2f} m") if xs else ""
+    print(f"seed {seed}, column {k}: {len(xs)} pairs{where}")

@@ -32,8 +32,8 @@ discs = params.TABLE_5_12_DISCS
 width, depth = 3.5, (10.0 if soft else 2.5)
 behind, ahead = (28.0, 6.5) if placed else ((17.0, 17.0) if soft else (2.0, 2.0))
 
-section = [(-behind, -depth), (width + ahead, -depth), (width + ahead, 0), (width, 0), (width, height), (0, height), (0, 0),
-           (-behind, 0)]
+section = [(-behind, -depth), (width + ahead, -depth), (width + ahead, 0), (width, 0), (width, height), (0, height),
+           (0, 0), (-behind, 0)]
 packed = packed_discs(section, discs["rmin"], discs["rmax"], 0.18, 1, False)
 ash = params.IHLARA_SECTION["ignimbrite"] if soft else height  # the ash cap above the ignimbrite's 25 m
 column = add_discs([d for d in packed if 0 <= d[1] < ash], ParallelBondMat(**params.TABLE_5_12["ignimbrite"]))
@@ -70,5 +70,5 @@ print(f"lone column {width} x {height} m, {len(members)} discs, joint kn {kn:g} 
 for _ in range(15):
     run_steps(steps_in(0.1))
     tilt = math.degrees(math.atan2(median_x(top) - median_x(low), height - 1.0))
-    print(f"t {O.time:.2f} s: tilt {tilt:+.3f}°, top x {1e3 * median_x(top):+.1f} mm, foot x {1e3 * median_x(low):+.1f} mm",
-          flush=True)
+    print(f"t {O.time:.2f} s: tilt {tilt:+.3f}°, top x {1e3 * median_x(top):+.1f} mm, "
+          f"foot x {1e3 * median_x(low):+.1f} mm", flush=True)

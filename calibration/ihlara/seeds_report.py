@@ -23,22 +23,24 @@ THESIS = {"intact": "stands until the tuff weathers (§5.4.1.2)",
 def row(name: str, s: dict[str, Any]) -> dict[str, Any]:
     zones = s.get("zones") or {}
     toppling = [label for label, zone in zones.items() if zone == "toppling"]
+    stable = [label for label, zone in zones.items() if zone == "stable"]  # moved, came to rest
     return {"run": name, "seed": s["inputs"]["seed"], "case": s["inputs"]["case"],
             "weathered_strength_factor": s["inputs"]["weathered_strength_factor"], "failed": int(bool(s["failed"])),
-            "toppling": " ".join(toppling), "toppling_columns": len(toppling),
+            "toppling": " ".join(toppling), "toppling_columns": len(toppling), "moved_and_stood": " ".join(stable),
             "moved_columns": sum(zone not in ("no-movement", "empty") for zone in zones.values()),
             **{k: s.get(k) for k in ("tensile_breaks", "shear_breaks", "simulated_time", "steps", "wall_time")},
             "commit": records.commit(s)}
 
 
 def report(rows: dict[str, dict[str, Any]]) -> None:
-    print("| case | packings that fail | columns toppling, by seed | breaks (tensile / shear), mean | wall (s), mean | thesis |\n"
-          "|---|---|---|---|---|---|")
+    print("| case | packings that fail | columns toppling (moved and stood), by seed | breaks (tensile / shear), "
+          "mean | wall (s), mean | thesis |\n|---|---|---|---|---|---|")
     for case, thesis in THESIS.items():
         runs = sorted((r for name, r in rows.items() if name.rsplit("_s", 1)[0] == case), key=lambda r: r["seed"])
         if not runs:
             continue
-        toppling = ", ".join(f"{int(r['seed'])}: {r['toppling'] or '-'}" for r in runs)
+        toppling = ", ".join(f"{int(r['seed'])}: {r['toppling'] or '-'}"
+                             + (f" ({r['moved_and_stood']})" if r["moved_and_stood"] else "") for r in runs)
         mean = lambda key: statistics.mean(r[key] for r in runs)  # noqa: E731
         print(f"| {case} | {sum(r['failed'] for r in runs):.0f} of {len(runs)} | {toppling} | "
               f"{mean('tensile_breaks'):.0f} / {mean('shear_breaks'):.0f} | {mean('wall_time'):.0f} | {thesis} |")

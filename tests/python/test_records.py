@@ -36,6 +36,12 @@ def test_runs_are_added_to_the_record_read_back_as_numbers_and_a_rerun_replaces_
     assert first["commit"] == "0123456+modified"  # text, though it reads as a number
 
 
+def test_a_studys_first_record_makes_its_folder(tmp_path):
+    path = str(tmp_path / "records" / "runs.csv")
+    write_runs(tmp_path / "a", {"base_s1": summary(1, 14.5)})
+    assert list(records.update(path, str(tmp_path / "a"), row, NUMBERS)) == ["base_s1"]
+
+
 def test_no_record_yet_has_no_rows(tmp_path):
     assert records.read(str(tmp_path / "none.csv"), NUMBERS) == {}
 

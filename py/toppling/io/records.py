@@ -37,6 +37,7 @@ def update(path: str, folder: str, row: Row, numbers: Sequence[str]) -> dict[str
     if not rows:
         return {}
     columns = list(dict.fromkeys(k for r in rows.values() for k in r))
+    os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)  # a study's first record
     with open(path, "w", newline="") as f:
         writer = csv.DictWriter(f, columns, lineterminator="\n")
         writer.writeheader()
