@@ -80,7 +80,8 @@ def record(model: str) -> dict[str, dict]:
         return {"run": name, **{k: s["inputs"][k] for k in ("rmin", "rmax", "seed")},
                 **{k: value(s, k) for k in COST[3:]}, **{k: value(s, k) for k, _ in ANSWERS[model]},
                 "commit": records.commit(s)}
-    return records.update(f"{HERE}/records/speed_accuracy_{model}.csv", f"{RESULTS}/{model}", row, COST + tuple(k for k, _ in ANSWERS[model]))
+    numbers = COST + tuple(k for k, _ in ANSWERS[model])
+    return records.update(f"{HERE}/records/speed_accuracy_{model}.csv", f"{RESULTS}/{model}", row, numbers)
 
 
 def by_size(model: str) -> list[dict]:
