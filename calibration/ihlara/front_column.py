@@ -6,9 +6,10 @@ its contacts), column 1's intact bonds and the median displacement of its top an
 discs aside); at the end its discs' median displacement by height. Options: ``alone``: the columns
 behind it taken away before the cliff settles (nothing pushes it); ``fixed``: the joint normals keep
 their installed direction (Law2's turnInterval out of reach); ``closure``: joint contacts made
-later start with their faces' closure (JointSystem.faceClosure); a number: how many reports.
+later start with their faces' closure (JointSystem.faceClosure); ``seed=N``: the packing (1 by
+default); a number: how many reports.
 
-    ./yade -x -n -j1 calibration/ihlara/front_column.py [intact|weathered|eroded [alone] [fixed] [closure] [reports]]
+    ./yade -x -n -j1 calibration/ihlara/front_column.py [intact|weathered|eroded [alone] [fixed] [closure] [seed=N] [reports]]
 """
 import math
 import statistics
@@ -26,7 +27,8 @@ from toppling.run.steps import run_steps, steps_in
 case = sys.argv[1] if len(sys.argv) > 1 else "intact"
 alone, fixed, closure = "alone" in sys.argv[2:], "fixed" in sys.argv[2:], "closure" in sys.argv[2:]
 reports = int(sys.argv[-1]) if sys.argv[-1].isdigit() else 12
-cliff = layered_cliff.ihlara_from_params(SimpleNamespace(**{**params.IHLARA, "case": case}), params)
+seed = next((int(a[5:]) for a in sys.argv[2:] if a.startswith("seed=")), 1)
+cliff = layered_cliff.ihlara_from_params(SimpleNamespace(**{**params.IHLARA, "case": case, "seed": seed}), params)
 face, width = cliff.face_x, cliff.column_width
 column_1 = (face - width, face)
 
