@@ -57,7 +57,11 @@ def run_example(path: str, tmp_path, threads: int = 1, **params) -> dict:
 
 
 def load_script(path: str):
-    """The script at ``path`` (from the repository's root) as a module, to test its functions."""
+    """The script at ``path`` (from the repository's root) as a module, to test its functions; its
+    folder goes on the import path, as when it runs, for the siblings it imports."""
+    folder = os.path.dirname(os.path.join(REPO, path))
+    if folder not in sys.path:
+        sys.path.insert(0, folder)
     name = os.path.splitext(os.path.basename(path))[0]
     spec = importlib.util.spec_from_file_location(name, os.path.join(REPO, path))
     module = importlib.util.module_from_spec(spec)

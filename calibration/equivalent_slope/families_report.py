@@ -1,6 +1,7 @@
 """The four families of thesis §5.3.3 beside the thesis: one row per case (ours mean ± sd over
 its packing seeds, the thesis' figures from records/thesis_families.csv), the issue's checks, and
-the figures Fig 5-25 (against D/H) and Fig 5-29 (against the main joints' friction).
+the figures Fig 5-25 (against D/H) and Fig 5-29 (against the main joints' friction), and what the
+runs cost by family.
 
     source scripts/env.sh; /usr/bin/python3 calibration/equivalent_slope/families_report.py [results/equivalent_slope/families]
 
@@ -106,6 +107,19 @@ def figure(cases: dict[str, dict], ours: dict[str, list[dict]], table_name: str,
     output.save_figure(fig, out, file)
 
 
+def cost(cases: dict[str, dict], ours: dict[str, list[dict]]) -> None:
+    """Wall time and steps per run, by family (the thesis' table a case comes from)."""
+    print("| family | runs | wall (s), median | range | steps, median |\n|---|---|---|---|---|")
+    families: dict[str, list[dict]] = {}
+    for name, t in cases.items():
+        families.setdefault("base model" if name == "base" else f"Table {t['table']}", []).extend(ours.get(name, []))
+    for family, runs in families.items():
+        if runs:
+            wall, steps = [r["wall_time"] for r in runs], [r["steps"] for r in runs]
+            print(f"| {family} | {len(runs)} | {statistics.median(wall):.0f} | {min(wall):.0f}–{max(wall):.0f} | "
+                  f"{statistics.median(steps):,.0f} |")
+
+
 def main(folder: str) -> None:
     os.makedirs(folder, exist_ok=True)
     cases, ours = thesis_cases(), by_case(record.update(folder))
@@ -115,6 +129,8 @@ def main(folder: str) -> None:
     trend = friction_trend(ours)
     print(f"φ against Jφ over Table 5-10 cases 2-8, Spearman per seed: {', '.join(f'{r:.2f}' for r in trend) or '-'}"
           f" (the issue asks > 0.5)")
+    print()
+    cost(cases, ours)
     figure(cases, ours, "5-7", "D/H", folder, "fig_5_25")
     figure(cases, ours, "5-10", "main joints' friction coefficient", folder, "fig_5_29")
 
