@@ -133,11 +133,25 @@ def report(model: str) -> None:
         print(f"| {1e3 * row['rmin']:g}–{1e3 * row['rmax']:g} | {row['width_over_rmax']:.1f} | {row['runs']}{first} | "
               f"{row['discs']:.0f} | {row['steps']:.0f} | {row['wall_time']:.0f} | " + " | ".join(cells) + " |")
         table.append({k: v for k, v in row.items() if not isinstance(v, list)})
+    print(recommended(rows, answers))
     with open(f"{output.output_dir(RESULTS)}/{model}.csv", "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=sorted({k for r in table for k in r}))
         w.writeheader()
         w.writerows(table)
     chart(model, rows)
+
+
+def recommended(rows: list[dict], answers: list[tuple[str, str]]) -> str:
+    """The cheapest size whose every answer's mean lies within the finest's seed sd of the finest's
+    mean: coarser than that, the answer moves by more than the packing's own scatter."""
+    finest = rows[-1]
+    keys = [key for key, _ in answers if f"{key}_shift" in finest]
+    for row in sorted(rows, key=lambda r: r["wall_time"]):
+        if all(f"{key}_shift" in row and abs(row[f"{key}_shift"]) <= finest[f"{key}_sd"] for key in keys):
+            which = "the finest itself" if row is finest else f"{row['wall_time'] / finest['wall_time']:.2f} of its wall time"
+            return (f"recommended: width / Rmax {row['width_over_rmax']:.1f} (R {1e3 * row['rmin']:g}–{1e3 * row['rmax']:g} "
+                    f"mm), {which}: every answer within the finest's seed sd of its mean")
+    return "recommended: none"
 
 
 def chart(model: str, rows: list[dict]) -> None:
