@@ -35,7 +35,7 @@ def windows(discs: np.ndarray, cliff) -> list[tuple[float, float, float]]:
     return found
 
 
-def largest_hole(discs: np.ndarray, cliff, box: tuple[float, float, float, float]) -> tuple[float, float, float]:
+def largest_hole(discs: np.ndarray, box: tuple[float, float, float, float]) -> tuple[float, float, float]:
     """(x, y, radius) of the largest empty circle centred in ``box`` (x0, x1, y0, y1), on a 2 cm grid:
     the most room a disc would find between its neighbours."""
     gx, gy = np.meshgrid(np.arange(box[0], box[1], 0.02), np.arange(box[2], box[3], 0.02))
@@ -70,8 +70,9 @@ for seed in seeds:
     print("  " + show("column 1's loosest at its foot:", min((w for w in mine if w[1] < 0 < w[1] + cell),
                                                               key=lambda w: w[2])))
     m = cliff.rmax
-    hole = largest_hole(discs, cliff, (m, cliff.face_x - m, -cliff.foundation.top + m, cliff.height - m))
-    mine = largest_hole(discs, cliff, (cliff.face_x - cliff.column_width, cliff.face_x - m, -cliff.column_width,
-                                       cliff.height - m))
-    print(f"  largest hole above the foundation: r {hole[2]:.3f} m at ({hole[0]:.2f}, {hole[1]:+.2f}); in column 1: "
-          f"r {mine[2]:.3f} m at ({mine[0]:.2f}, {mine[1]:+.2f}) (Rmin {cliff.rmin} m)", flush=True)
+    anywhere = largest_hole(discs, (m, cliff.face_x - m, -cliff.foundation.top + m, cliff.height - m))
+    in_column = largest_hole(discs, (cliff.face_x - cliff.column_width, cliff.face_x - m, -cliff.column_width,
+                                     cliff.height - m))
+    print(f"  largest empty circle behind the face: r {anywhere[2]:.3f} m at ({anywhere[0]:.2f}, {anywhere[1]:+.2f}); "
+          f"in column 1: r {in_column[2]:.3f} m at ({in_column[0]:.2f}, {in_column[1]:+.2f}) (Rmin {cliff.rmin} m)",
+          flush=True)
