@@ -16,16 +16,11 @@ from scipy.spatial import cKDTree
 from examples import params
 from toppling.models import layered_cliff, tilting_table
 
-args = sys.argv[1:]
-cell = next((float(a[5:]) for a in args if a.startswith("cell=")), 1.75)
-seeds = [int(a) for a in args if a.isdigit()] or [1, 2, 3, 4, 5]
-stride = cell / 7
-
-
-def windows(discs: np.ndarray, cliff) -> list[tuple[float, float, float]]:
-    """(left, bottom, solid fraction) of every window that stays ``rmax`` inside the rock's walls."""
+def windows(discs: np.ndarray, cliff, cell: float) -> list[tuple[float, float, float]]:
+    """(left, bottom, solid fraction) of every ``cell``-wide window, slid by a seventh of it, that
+    stays ``rmax`` inside the rock's walls."""
     x, y, area = discs[:, 0], discs[:, 1], np.pi * discs[:, 2] ** 2
-    margin, found = cliff.rmax, []
+    margin, found, stride = cliff.rmax, [], cell / 7
     for bottom in np.arange(-cliff.foundation.top + margin, cliff.height - margin - cell + 1e-9, stride):
         right = (cliff.face_x if bottom + cell > -margin else cliff.width) - margin
         row = (y >= bottom) & (y < bottom + cell)
@@ -50,15 +45,15 @@ def column_1(w: tuple[float, float, float], cliff) -> bool:
     return w[0] >= cliff.face_x - cliff.column_width - 1e-9 and w[1] >= -cliff.column_width
 
 
-def show(label: str, w: tuple[float, float, float]) -> str:
-    return f"{label} x {w[0]:.2f}-{w[0] + cell:.2f} m, y {w[1]:+.2f}-{w[1] + cell:+.2f} m: {w[2]:.3f}"
+def report(seed: int, cell: float) -> None:
+    """The seed's packing: its loosest windows and largest empty circles, printed."""
+    def show(label: str, w: tuple[float, float, float]) -> str:
+        return f"{label} x {w[0]:.2f}-{w[0] + cell:.2f} m, y {w[1]:+.2f}-{w[1] + cell:+.2f} m: {w[2]:.3f}"
 
-
-for seed in seeds:
     cliff = layered_cliff.ihlara_from_params(SimpleNamespace(**{**params.IHLARA, "case": "intact", "seed": seed}),
                                              params)
     discs = np.array(tilting_table.packed_discs(cliff.section(), cliff.rmin, cliff.rmax, cliff.porosity, seed, False))
-    found = windows(discs, cliff)
+    found = windows(discs, cliff, cell)
     fractions = np.array([w[2] for w in found])
     print(f"seed {seed}: {len(discs)} discs, {len(found)} windows of {cell} m: solid fraction median "
           f"{np.median(fractions):.3f}, 1st percentile {np.percentile(fractions, 1):.3f}")
@@ -76,3 +71,8 @@ for seed in seeds:
     print(f"  largest empty circle behind the face: r {anywhere[2]:.3f} m at ({anywhere[0]:.2f}, {anywhere[1]:+.2f}); "
           f"in column 1: r {in_column[2]:.3f} m at ({in_column[0]:.2f}, {in_column[1]:+.2f}) (Rmin {cliff.rmin} m)",
           flush=True)
+
+if __name__ == "__main__":
+    args = sys.argv[1:]
+    for seed in [int(a) for a in args if a.isdigit()] or [1, 2, 3, 4, 5]:
+        report(seed, next((float(a[5:]) for a in args if a.startswith("cell=")), 1.75))
