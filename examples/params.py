@@ -164,7 +164,7 @@ IHLARA_BACK_ANALYSIS = 1.27  # the weathered tuff's bond strengths divided by it
 IHLARA_SECTION = dict(width=38.0, tuff=10.0, ignimbrite=25.0, ash=5.0, face_x=31.5, column_width=3.5,
                       weathered_depth=2.5)  # [m]
 IHLARA = dict(case="weathered", weathered_strength_factor=1.0, joint_gap=TABLE_5_13["gap"], joint_shear_stiffness=0.0,
-              porosity=0.18, seed=1, timestep_safety=0.8,
+              **TABLE_5_12_DISCS, porosity=0.18, seed=1, timestep_safety=0.8,
               damping=0.0, settle_damping=0.7, chunk=0.1, rest_speed=0.01, fail_displacement=0.5,
               max_stage_time=10.0, fail_columns=1, post_failure_time=5.0, resume=-1, checkpoint_every=600.0,
-              max_wall_time=0.0, exact_resume=0)  # case: intact | weathered | eroded; m, N/m3 (0: Table 5-13's); s, m/s, m, s, -, s
+              max_wall_time=0.0, exact_resume=0)  # case: intact | weathered | eroded; m, N/m3 (0: Table 5-13's); rmin, rmax, bond_gap m; s, m/s, m, s, -, s

@@ -123,13 +123,14 @@ def ihlara_from_params(p: Any, thesis: Any) -> LayeredCliff:
     """The Ihlara Valley's cliff (thesis §5.4.1) from a parameter set ``p`` (``case``: 'intact',
     'weathered' or 'eroded'; ``weathered_strength_factor`` divides the weathered tuff's bond
     strengths; ``joint_gap`` [m]; ``joint_shear_stiffness`` [N/m³], 0: Table 5-13's; ``porosity``,
-    ``seed``, ``timestep_safety``, ``damping``) and the thesis' numbers (``thesis``: examples/params.py)."""
+    ``rmin``, ``rmax``, ``bond_gap`` [m], ``seed``, ``timestep_safety``, ``damping``) and the thesis' numbers
+    (``thesis``: examples/params.py)."""
     if p.case not in ("intact", "weathered", "eroded"):
         raise ValueError(f"case = {p.case!r} is invalid: it must be 'intact', 'weathered' or 'eroded'")
     require("weathered_strength_factor", p.weathered_strength_factor, "(0, inf)")
     require("joint_gap", p.joint_gap, "[0, inf)")
     require("joint_shear_stiffness", p.joint_shear_stiffness, "[0, inf)")
-    section, rocks, discs, joint = thesis.IHLARA_SECTION, thesis.TABLE_5_12, thesis.TABLE_5_12_DISCS, thesis.TABLE_5_13
+    section, rocks, joint = thesis.IHLARA_SECTION, thesis.TABLE_5_12, thesis.TABLE_5_13
     weathered = dict(rocks["weathered"])
     for key in ("bondTensileStrength", "bondCohesion"):
         weathered[key] /= p.weathered_strength_factor
@@ -142,7 +143,7 @@ def ihlara_from_params(p: Any, thesis: Any) -> LayeredCliff:
         face_x=section["face_x"], column_width=section["column_width"],
         vertical=JointMaterial(kn, joint["vertical"][2], ks), bedding=JointMaterial(kn, joint["bedding"][2], ks),
         zone=None if p.case == "intact" else Zone(box, weathered if p.case == "weathered" else None),
-        joint_gap=p.joint_gap, bond_gap=discs["bond_gap"], rmin=discs["rmin"], rmax=discs["rmax"],
+        joint_gap=p.joint_gap, bond_gap=p.bond_gap, rmin=p.rmin, rmax=p.rmax,
         porosity=p.porosity, seed=p.seed, timestep_safety=p.timestep_safety, damping=p.damping)
 
 
