@@ -9,8 +9,8 @@ from conftest import REPO
 from toppling.run.sweep import batch_table
 from yade.utils import TableParamReader
 
-TABLES = sorted(glob.glob(os.path.join(REPO, "examples", "**", "*.table"), recursive=True) +
-                glob.glob(os.path.join(REPO, "calibration", "**", "*.table"), recursive=True))
+TABLES = sorted(path for folder in ("examples", "calibration", "benchmarks")
+                for path in glob.glob(os.path.join(REPO, folder, "**", "*.table"), recursive=True))
 ODD = """# a comment line
 x y! z
 1 2 3   # comment after values
@@ -21,12 +21,13 @@ x y! z
 
 
 @pytest.mark.parametrize("path", TABLES, ids=lambda p: os.path.relpath(p, REPO))
-def test_every_committed_table_reads_as_yade_reads_it(path):
+def test_every_committed_table_reads_as_yade_reads_it_and_its_values_evaluate(path):
     ours = batch_table.read(path)
     yade = TableParamReader(path).paramDict()
     assert list(ours.lines) == sorted(yade)
     for number, line in ours.lines.items():
         assert {**line.values, "description": line.description} == yade[number]
+        line.parameters()  # a word without quotes would stop the job at its start (NameError)
 
 
 def test_repeats_bangs_comments_and_repeated_descriptions_read_as_yade_reads_them(tmp_path):
