@@ -42,6 +42,15 @@ def test_a_studys_first_record_makes_its_folder(tmp_path):
     assert list(records.update(path, str(tmp_path / "a"), row, NUMBERS)) == ["base_s1"]
 
 
+def test_a_figure_added_to_a_study_later_reads_as_none_in_the_older_rows(tmp_path):
+    path = str(tmp_path / "runs.csv")
+    write_runs(tmp_path / "a", {"base_s1": summary(1, 14.5)})
+    records.update(path, str(tmp_path / "a"), row, NUMBERS)
+    write_runs(tmp_path / "b", {"base_s2": {**summary(2, 12.0), "rmax": 0.1}})
+    rows = records.update(path, str(tmp_path / "b"), lambda n, s: {**row(n, s), "rmax": s["rmax"]}, (*NUMBERS, "rmax"))
+    assert (rows["base_s1"]["rmax"], rows["base_s2"]["rmax"]) == (None, 0.1)
+
+
 def test_no_record_yet_has_no_rows(tmp_path):
     assert records.read(str(tmp_path / "none.csv"), NUMBERS) == {}
 

@@ -22,11 +22,11 @@ def _number(text: str) -> Optional[float]:
 
 def read(path: str, numbers: Sequence[str]) -> dict[str, dict[str, Any]]:
     """The record's rows by run name (column ``run``); the ``numbers`` columns as floats (None
-    where empty), the others as text. No file: no rows."""
+    where empty, or where the record predates the column), the others as text. No file: no rows."""
     if not os.path.exists(path):
         return {}
     with open(path, newline="") as f:
-        return {r["run"]: {**r, **{k: _number(r[k]) for k in numbers}} for r in csv.DictReader(f)}
+        return {r["run"]: {**r, **{k: _number(r.get(k) or "") for k in numbers}} for r in csv.DictReader(f)}
 
 
 def update(path: str, folder: str, row: Row, numbers: Sequence[str]) -> dict[str, dict[str, Any]]:
