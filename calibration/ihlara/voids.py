@@ -5,7 +5,10 @@ Windows stay Rmax inside the packing's walls. Prints the loosest window of the w
 loosest of column 1 (the front column) in its ignimbrite and at its foot (the windows across the
 bedding), and the largest empty circle (the most room a disc would find).
 
-    ./yade -x -n -j1 calibration/ihlara/voids.py [seeds, default 1 2 3 4 5] [cell=1.75]
+    ./yade -x -n -j1 calibration/ihlara/voids.py [seeds, default 1 2 3 4 5] [cell=1.75] [rmin=R rmax=R]
+
+``rmin``, ``rmax`` [m]: the packing's radii, Table 5-12's by default (calibration/ihlara/finer.table's:
+rmin=0.10 rmax=0.1667).
 """
 import sys
 from types import SimpleNamespace
@@ -45,13 +48,14 @@ def column_1(w: tuple[float, float, float], cliff) -> bool:
     return w[0] >= cliff.face_x - cliff.column_width - 1e-9 and w[1] >= -cliff.column_width
 
 
-def report(seed: int, cell: float) -> None:
-    """The seed's packing: its loosest windows and largest empty circles, printed."""
+def report(seed: int, cell: float, radii: dict[str, float]) -> None:
+    """The seed's packing (``radii``: rmin, rmax over Table 5-12's): its loosest windows and
+    largest empty circles, printed."""
     def show(label: str, w: tuple[float, float, float]) -> str:
         return f"{label} x {w[0]:.2f}-{w[0] + cell:.2f} m, y {w[1]:+.2f}-{w[1] + cell:+.2f} m: {w[2]:.3f}"
 
-    cliff = layered_cliff.ihlara_from_params(SimpleNamespace(**{**params.IHLARA, "case": "intact", "seed": seed}),
-                                             params)
+    cliff = layered_cliff.ihlara_from_params(
+        SimpleNamespace(**{**params.IHLARA, **radii, "case": "intact", "seed": seed}), params)
     discs = np.array(tilting_table.packed_discs(cliff.section(), cliff.rmin, cliff.rmax, cliff.porosity, seed, False))
     found = windows(discs, cliff, cell)
     fractions = np.array([w[2] for w in found])
@@ -72,7 +76,10 @@ def report(seed: int, cell: float) -> None:
           f"in column 1: r {in_column[2]:.3f} m at ({in_column[0]:.2f}, {in_column[1]:+.2f}) (Rmin {cliff.rmin} m)",
           flush=True)
 
+
 if __name__ == "__main__":
     args = sys.argv[1:]
+    options = {k: float(v) for k, _, v in (a.partition("=") for a in args if "=" in a)}
+    cell = options.pop("cell", 1.75)
     for seed in [int(a) for a in args if a.isdigit()] or [1, 2, 3, 4, 5]:
-        report(seed, next((float(a[5:]) for a in args if a.startswith("cell=")), 1.75))
+        report(seed, cell, options)
