@@ -1,6 +1,7 @@
-"""The Ihlara cliff over five packings (examples/field/ihlara_seeds.table; calibration/ihlara/finer.table
-on finer discs): each finished run of the folders added to the record (records/seed_runs.csv, ``toppling.io.records``), then per case how
-many packings fail and which columns topple, beside the thesis (docs/cases/ihlara.md).
+"""The Ihlara cliff over five packings (examples/field/ihlara_seeds.table; on finer discs,
+calibration/ihlara/finer.table): each finished run of the folders added to the record
+(records/seed_runs.csv, ``toppling.io.records``), then per study (a run's name without its seed)
+how many packings fail and which columns topple, beside the thesis (docs/cases/ihlara.md).
 
     source scripts/env.sh; /usr/bin/python3 calibration/ihlara/seeds_report.py [results/ihlara_seeds] [results/ihlara_finer]
 """
